@@ -1,0 +1,56 @@
+# kolsky: the two commands a newcomer needs are `make reproduce` and `make test`.
+# Every target installs missing Debian packages first (scripts/install-deps.sh, idempotent).
+BUILD   ?= build
+JOBS    ?= $(shell nproc 2>/dev/null || echo 2)
+CMAKE_FLAGS ?= -DCMAKE_BUILD_TYPE=Release
+REPORTS ?= reports
+SETS    := verification bars
+
+.PHONY: all build deps configure test check reproduce bench help clean \
+        reproduce-verification reproduce-bars \
+        reproduce-chapter2 reproduce-chapter3 reproduce-chapter4 reproduce-chapter5
+
+all: build
+
+help:
+	@echo "kolsky make targets:"
+	@echo "  make               build (Release) after installing missing Debian packages"
+	@echo "  make test          unit tests, verification checks and smoke reproductions (CTest)"
+	@echo "  make check         unit tests and verification checks only (about a minute)"
+	@echo "  make reproduce     every reproduction set at full scale -> $(REPORTS)/<set>/"
+	@echo "  make reproduce-<set>   one set: $(SETS)"
+	@echo "  make reproduce-chapterN  N = 2..5 (not implemented yet)"
+	@echo "  make bench         Google Benchmark -> benchmarks/results/<date>_<commit>_<bench>.json"
+	@echo "  make clean         remove $(BUILD)/ and $(REPORTS)/"
+
+deps:
+	@bash scripts/install-deps.sh
+
+configure: deps
+	@cmake -S . -B $(BUILD) $(CMAKE_FLAGS) >/dev/null
+
+build: configure
+	@cmake --build $(BUILD) -j $(JOBS)
+
+test: build
+	@cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
+
+check: build
+	@cd $(BUILD) && ctest --output-on-failure -j $(JOBS) -L check
+
+reproduce: build
+	@status=0; for s in $(SETS); do \
+	  $(BUILD)/reproductions/reproduce_$$s --scale full --out $(REPORTS)/$$s || status=1; \
+	done; exit $$status
+
+reproduce-verification reproduce-bars: reproduce-%: build
+	@$(BUILD)/reproductions/reproduce_$* --scale full --out $(REPORTS)/$*
+
+reproduce-chapter2 reproduce-chapter3 reproduce-chapter4 reproduce-chapter5:
+	@echo "$@: not implemented yet (see the open issues); no report written" >&2; exit 1
+
+bench: build
+	@bash scripts/run-benchmarks.sh $(BUILD)/benchmarks benchmarks/results
+
+clean:
+	rm -rf $(BUILD) $(REPORTS)

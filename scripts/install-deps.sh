@@ -1,0 +1,51 @@
+#!/usr/bin/env bash
+# Installs the Debian packages kolsky needs, and only those that are missing.
+# Idempotent: a second run installs nothing and does not call apt-get at all.
+# Usage: scripts/install-deps.sh [--check]   (--check: report what is missing, install nothing)
+set -euo pipefail
+
+packages=(
+  build-essential cmake pkg-config git       # toolchain
+  libeigen3-dev                              # Eigen3 (small dense linear algebra)
+  libgsl-dev                                 # GSL (least squares, minimisers)
+  libboost-dev                               # Boost headers (Odeint)
+  libgtest-dev libgmock-dev                  # GoogleTest
+  libbenchmark-dev                           # Google Benchmark
+  libhdf5-dev hdf5-tools                     # HDF5 C library and h5dump
+  nlohmann-json3-dev                         # JSON scenes
+  gnuplot-nox                                # plots (pngcairo terminal)
+)
+
+missing=()
+for p in "${packages[@]}"; do
+  if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then
+    missing+=("$p")
+  fi
+done
+
+if [ ${#missing[@]} -eq 0 ]; then
+  echo "install-deps: all ${#packages[@]} packages present"
+  exit 0
+fi
+
+echo "install-deps: missing: ${missing[*]}"
+if [ "${1:-}" = "--check" ]; then exit 1; fi
+
+if [ "$(id -u)" -ne 0 ]; then
+  if command -v sudo >/dev/null 2>&1; then SUDO=sudo; else
+    echo "install-deps: need root (or sudo) to install: ${missing[*]}" >&2; exit 1
+  fi
+else
+  SUDO=""
+fi
+
+export DEBIAN_FRONTEND=noninteractive
+echo "install-deps: apt-get update"
+if ! $SUDO apt-get update -q >/dev/null; then
+  echo "install-deps: 'apt-get update' failed: is the Debian mirror reachable?" >&2; exit 1
+fi
+echo "install-deps: apt-get install -y ${missing[*]}"
+if ! $SUDO apt-get install -y -q --no-install-recommends "${missing[@]}" >/dev/null; then
+  echo "install-deps: 'apt-get install' failed for: ${missing[*]}" >&2; exit 1
+fi
+echo "install-deps: installed ${#missing[@]} package(s)"

@@ -1,0 +1,18 @@
+#!/usr/bin/env bash
+# Runs every Google Benchmark binary and keeps its JSON in benchmarks/results/, named by date
+# and commit, then prints a one-line summary per benchmark.
+set -euo pipefail
+bin_dir=${1:?benchmark binary folder}
+out_dir=${2:?results folder}
+mkdir -p "$out_dir"
+stamp=$(date -u +%Y%m%d)
+commit=$(git rev-parse --short=12 HEAD 2>/dev/null || echo unknown)
+shopt -s nullglob
+for b in "$bin_dir"/bench_*; do
+  name=$(basename "$b")
+  out="$out_dir/${stamp}_${commit}_${name}.json"
+  "$b" --benchmark_out="$out.tmp" --benchmark_out_format=json --benchmark_repetitions=3 \
+       --benchmark_report_aggregates_only=true
+  mv "$out.tmp" "$out"
+  echo "bench: wrote $out"
+done

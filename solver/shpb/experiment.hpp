@@ -1,0 +1,45 @@
+// The simulated SHPB test: incident bar, specimen, transmission bar, coupled through the face
+// degrees of freedom, advanced by the one explicit time loop (time/explicit_loop.hpp).
+#pragma once
+#include <string>
+#include <variant>
+#include <vector>
+
+#include "bar/material.hpp"
+#include "bar/pulse.hpp"
+#include "bar/specimen_column.hpp"
+
+namespace kolsky::shpb {
+
+enum class BarKind { characteristic, sphere_chain };
+
+struct BarSpec {
+  bar::BarMaterial material;
+  bar::BarGeometry geometry;
+  std::vector<double> gauges;  ///< gauge distances from the specimen face, m
+  int n_spheres = 0;           ///< sphere-chain bars: ball count (0: L/(2R), Eq. 4.3)
+};
+
+struct TimeSpec {
+  double end_time = 1.5e-3;     ///< s
+  double dt = 0.0;              ///< s; 0 = safety_factor * stable dt
+  double safety_factor = 0.5;
+  bool check_stability = true;  ///< false only to exercise the blow-up detector
+  double energy_tolerance = 0.01; ///< relative energy growth that counts as a blow-up
+};
+
+struct OutputSpec {
+  double interval = 0.0;  ///< probe sampling interval, s; 0 = every 1 us rounded to steps
+};
+
+struct ExperimentSpec {
+  std::string title;
+  BarKind bar_kind = BarKind::characteristic;
+  BarSpec incident, transmission;
+  bar::Pulse pulse = bar::TrapezoidPulse{};
+  bar::ColumnParams specimen;
+  TimeSpec time;
+  OutputSpec output;
+};
+
+}  // namespace kolsky::shpb

@@ -1,0 +1,199 @@
+#include "shpb/simulation.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace kolsky::shpb {
+
+namespace {
+
+Bar make_bar(BarKind kind, const BarSpec& b, std::optional<bar::Pulse> load, double face_mass) {
+  if (kind == BarKind::sphere_chain) {
+    const int n = b.n_spheres > 0 ? b.n_spheres
+                                  : bar::sphere_count(b.geometry.length, b.geometry.diameter);
+    return bar::SphereChainBar(b.material, b.geometry, n, std::move(load), face_mass);
+  }
+  return bar::CharacteristicBar(b.material, b.geometry, std::move(load), face_mass);
+}
+
+double stable_dt_of(const Bar& b) {
+  return std::visit([](const auto& x) { return x.stable_dt(); }, b);
+}
+
+time_loop::StepPolicy policy(const TimeSpec& t, const OutputSpec& o) {
+  return {t.end_time, t.dt, t.safety_factor, t.check_stability, o.interval};
+}
+
+}  // namespace
+
+const Probe& RunResult::probe(const std::string& name) const {
+  for (const auto& p : probes)
+    if (p.name == name) return p;
+  throw std::out_of_range("no probe named '" + name + "'");
+}
+
+FaceWaves RunResult::face_waves(double incident_modulus, double transmission_modulus) const {
+  FaceWaves w;
+  const auto& si = probe("wave_incident").value;
+  const auto& sr = probe("wave_reflected").value;
+  const auto& st = probe("wave_transmitted").value;
+  for (size_t k = 0; k < t.size(); ++k) {
+    if (t[k] < arrival_time - 1e-12) continue;
+    w.t.push_back(t[k] - arrival_time);
+    w.eps_i.push_back(si[k] / incident_modulus);
+    w.eps_r.push_back(sr[k] / incident_modulus);
+    w.eps_t.push_back(st[k] / transmission_modulus);
+  }
+  return w;
+}
+
+SimulatedShpb::SimulatedShpb(const ExperimentSpec& spec)
+    : spec_(spec),
+      specimen_(spec.specimen),
+      incident_(make_bar(spec.bar_kind, spec.incident, spec.pulse, specimen_.face_mass())),
+      transmission_(make_bar(spec.bar_kind, spec.transmission, std::nullopt, specimen_.face_mass())) {
+  const double stable = std::min({specimen_.stable_dt(), stable_dt_of(incident_),
+                                  stable_dt_of(transmission_)});
+  schedule_ = time_loop::plan_steps(policy(spec.time, spec.output), stable);
+}
+
+double SimulatedShpb::arrival_time() const {
+  const auto& g = spec_.incident.geometry;
+  if (spec_.bar_kind == BarKind::sphere_chain) {
+    // Ball 0 is loaded; the wave crosses N-1 contacts spaced 2R at the chain's long-wave speed.
+    const auto& chain = std::get<bar::SphereChainBar>(incident_);
+    return (chain.size() - 1) * g.diameter / chain.properties().long_wave_speed();
+  }
+  return g.length / spec_.incident.material.wave_speed();
+}
+
+AnalysisSetup SimulatedShpb::analysis_setup() const {
+  auto as_analysis_bar = [](const BarSpec& b) {
+    AnalysisBar a;
+    a.youngs_modulus = b.material.youngs_modulus;
+    a.density = b.material.density;
+    a.poisson_ratio = b.material.poisson_ratio;
+    a.diameter = b.geometry.diameter;
+    a.gauge_distance = b.gauges.empty() ? 0.0 : b.gauges.front();
+    return a;
+  };
+  AnalysisSetup s;
+  s.incident = as_analysis_bar(spec_.incident);
+  s.transmission = as_analysis_bar(spec_.transmission);
+  s.specimen_length = spec_.specimen.length;
+  s.specimen_diameter = spec_.specimen.diameter;
+  return s;
+}
+
+void SimulatedShpb::step(double t, double dt) {
+  auto intrusion = [](const Bar& b) { return std::visit([](const auto& x) { return x.intrusion(); }, b); };
+  auto rate = [](const Bar& b) { return std::visit([](const auto& x) { return x.rate(); }, b); };
+  bar::FaceState faces{intrusion(incident_), intrusion(transmission_), rate(incident_),
+                       rate(transmission_)};
+  forces_ = specimen_.forces(faces);
+  specimen_.advance(dt);
+  std::visit([&](auto& b) { b.step(t, dt, forces_.front); }, incident_);
+  std::visit([&](auto& b) { b.step(t, dt, forces_.back); }, transmission_);
+
+  // Wave energies, Eqs. 2.11-2.13, trapezoid in time on the face waves.
+  const double s[3] = {std::visit([](const auto& b) { return b.incoming_at_step(); }, incident_),
+                       std::visit([](const auto& b) { return b.outgoing_at_step(); }, incident_),
+                       std::visit([](const auto& b) { return b.outgoing_at_step(); }, transmission_)};
+  const auto& mi = spec_.incident.material;
+  const auto& mt = spec_.transmission.material;
+  const double ki = spec_.incident.geometry.area() / mi.specific_impedance();
+  const double kt = spec_.transmission.geometry.area() / mt.specific_impedance();
+  w_i_ += 0.5 * dt * ki * (prev_[0] * prev_[0] + s[0] * s[0]);
+  w_r_ += 0.5 * dt * ki * (prev_[1] * prev_[1] + s[1] * s[1]);
+  w_t_ += 0.5 * dt * kt * (prev_[2] * prev_[2] + s[2] * s[2]);
+  std::copy(s, s + 3, prev_);
+  // Energy scale for the blow-up bound: what the applied pulse has injected at the far end.
+  const double applied = bar::evaluate(spec_.pulse, t);
+  injected_ += dt * ki * applied * applied;
+}
+
+void SimulatedShpb::sample(double t, RunResult& r) {
+  const auto& mi = spec_.incident.material;
+  const auto& mt = spec_.transmission.material;
+  const double area_s = specimen_.area();
+  auto face_ke = [](const Bar& b) { return std::visit([](const auto& x) { return x.face_kinetic_energy(); }, b); };
+  auto delivered = [](const Bar& b) { return std::visit([](const auto& x) { return x.delivered_energy(); }, b); };
+  const double held = specimen_.energy().total() + face_ke(incident_) + face_ke(transmission_);
+  const double in = delivered(incident_) + delivered(transmission_);
+
+  bool ok = specimen_.finite() && std::isfinite(held) && std::isfinite(in);
+  ok = ok && std::visit([](const auto& b) { return b.finite(); }, incident_) &&
+       std::visit([](const auto& b) { return b.finite(); }, transmission_);
+  if (!ok) throw NumericalError("non-finite state at t = " + std::to_string(t) + " s", t);
+  const double bound = spec_.time.energy_tolerance * injected_;
+  if (held - in > bound && injected_ > 0.0)
+    throw NumericalError("energy grows: specimen holds " + std::to_string(held) +
+                             " J but only " + std::to_string(in) + " J entered (t = " +
+                             std::to_string(t) + " s)", t);
+
+  std::vector<double> v;
+  v.push_back(std::visit([](const auto& b) { return b.incoming_at_step(); }, incident_));
+  v.push_back(std::visit([](const auto& b) { return b.outgoing_at_step(); }, incident_));
+  v.push_back(std::visit([](const auto& b) { return b.outgoing_at_step(); }, transmission_));
+  v.push_back(forces_.front / area_s);
+  v.push_back(forces_.back / area_s);
+  v.push_back(specimen_.mean_strain());
+  v.push_back(std::visit([](const auto& b) { return b.rate_at_step(); }, incident_));
+  v.push_back(std::visit([](const auto& b) { return b.rate_at_step(); }, transmission_));
+  v.push_back(w_i_);
+  v.push_back(w_r_);
+  v.push_back(w_t_);
+  v.push_back(held);
+  v.push_back(in);
+  v.push_back(bar::evaluate(spec_.pulse, t));
+  for (double d : spec_.incident.gauges)
+    v.push_back(-std::visit([&](const auto& b) { return b.gauge_stress(d, t); }, incident_) /
+                mi.youngs_modulus);
+  for (double d : spec_.transmission.gauges)
+    v.push_back(-std::visit([&](const auto& b) { return b.gauge_stress(d, t); }, transmission_) /
+                mt.youngs_modulus);
+  r.t.push_back(t);
+  for (size_t k = 0; k < v.size(); ++k) r.probes[k].value.push_back(v[k]);
+}
+
+RunResult SimulatedShpb::run(Progress* progress) {
+  RunResult r;
+  r.dt = schedule_.dt;
+  r.stable_dt = schedule_.stable_dt;
+  r.arrival_time = arrival_time();
+  r.probes = {
+      {"wave_incident", "Pa", "incident wave at the incident-bar face (compression +)", {}},
+      {"wave_reflected", "Pa", "reflected wave at the incident-bar face (compression +)", {}},
+      {"wave_transmitted", "Pa", "transmitted wave at the transmission-bar face (compression +)", {}},
+      {"stress_front", "Pa", "interface stress, incident-bar face: force / specimen area", {}},
+      {"stress_back", "Pa", "interface stress, transmission-bar face: force / specimen area", {}},
+      {"specimen_strain", "1", "mean engineering strain from the face motion (compression +)", {}},
+      {"face_rate_front", "m/s", "incident-bar face velocity into the specimen", {}},
+      {"face_rate_back", "m/s", "transmission-bar face velocity into the specimen", {}},
+      {"w_incident", "J", "Eq. 2.11 incident wave energy", {}},
+      {"w_reflected", "J", "Eq. 2.12 reflected wave energy", {}},
+      {"w_transmitted", "J", "Eq. 2.13 transmitted wave energy", {}},
+      {"energy_held", "J", "specimen kinetic + internal work + face-mass kinetic energy", {}},
+      {"energy_delivered", "J", "energy the bars delivered to the faces", {}},
+      {"applied_stress", "Pa", "stress applied at the incident bar's far end", {}},
+  };
+  for (size_t k = 0; k < spec_.incident.gauges.size(); ++k)
+    r.probes.push_back({k == 0 ? "incident_gauge_strain" : "incident_gauge_strain_" + std::to_string(k + 1),
+                        "1", "incident-bar gauge strain as measured (compression -)", {}});
+  for (size_t k = 0; k < spec_.transmission.gauges.size(); ++k)
+    r.probes.push_back({k == 0 ? "transmission_gauge_strain" : "transmission_gauge_strain_" + std::to_string(k + 1),
+                        "1", "transmission-bar gauge strain as measured (compression -)", {}});
+  try {
+    time_loop::run_loop(
+        schedule_, [this, &r](double t, double dt) { step(t, dt); ++r.steps; },
+        [this, &r](double t) { sample(t, r); }, progress);
+  } catch (const NumericalError& e) {
+    if (progress) progress->finish();
+    r.complete = false;
+    r.failure = e.what();
+  }
+  return r;
+}
+
+}  // namespace kolsky::shpb

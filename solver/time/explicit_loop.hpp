@@ -1,0 +1,48 @@
+// The one explicit time loop: the physics reports its stable dt, the loop owns the dt policy
+// (safety factor, refusal of a dt above the limit), the step count, the output cadence and the
+// progress bar. Physics supplies `step(t, dt)` and `sample(t)`; either may throw
+// NumericalError, which the caller turns into an incomplete output and exit code 3.
+#pragma once
+#include <cmath>
+#include <string>
+
+#include "core/errors.hpp"
+#include "core/progress.hpp"
+
+namespace kolsky::time_loop {
+
+struct StepPolicy {
+  double end_time = 0;        ///< s
+  double dt = 0;              ///< s; 0 = safety_factor * stable dt
+  double safety_factor = 0.5; ///< fraction of the stable dt used when dt = 0
+  bool check_stability = true;
+  double output_interval = 1e-6;  ///< s; rounded to a whole number of steps
+};
+
+struct Schedule {
+  double dt = 0;
+  long n_steps = 0;
+  long sample_every = 1;
+  double stable_dt = 0;
+};
+
+/// Throws InputError("", "time.dt", ...) for a dt above the stability limit (when checked).
+Schedule plan_steps(const StepPolicy& p, double stable_dt);
+
+/// Runs n_steps steps at t^n = n dt; samples after the steps n = 0, k, 2k, ... (k =
+/// sample_every), i.e. at the times t^n whose state the step just completed. Returns t^n of the
+/// last step.
+template <class StepFn, class SampleFn>
+double run_loop(const Schedule& s, StepFn&& step, SampleFn&& sample, Progress* progress) {
+  double t = 0.0;
+  for (long n = 0; n < s.n_steps; ++n) {
+    t = static_cast<double>(n) * s.dt;
+    step(t, s.dt);
+    if (n % s.sample_every == 0) sample(t);
+    if (progress && n % 256 == 0) progress->update(t);
+  }
+  if (progress) progress->finish();
+  return t;
+}
+
+}  // namespace kolsky::time_loop
