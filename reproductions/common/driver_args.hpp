@@ -1,0 +1,40 @@
+// Command line shared by every reproduction driver:
+//   reproduce_<set> [--scale smoke|full] [--out DIR]
+// Scenes and targets are read from reproductions/<set>/ under the source tree the build came
+// from (KOLSKY_SOURCE_DIR), so the drivers run from any working directory.
+#pragma once
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+
+namespace kolsky::repro {
+
+struct DriverArgs {
+  std::string scale = "full";
+  std::string out_dir;
+  std::string repo_root = KOLSKY_SOURCE_DIR;
+  std::string set_dir() const { return repo_root + "/reproductions/" + set; }
+  std::string set;
+};
+
+inline DriverArgs parse_driver_args(int argc, char** argv, const std::string& set) {
+  DriverArgs a;
+  a.set = set;
+  a.out_dir = "reports/" + set;
+  for (int i = 1; i < argc; ++i) {
+    const std::string k = argv[i];
+    if ((k == "--scale" || k == "--out") && i + 1 < argc) {
+      (k == "--scale" ? a.scale : a.out_dir) = argv[++i];
+    } else {
+      std::fprintf(stderr, "usage: reproduce_%s [--scale smoke|full] [--out DIR]\n", set.c_str());
+      std::exit(k == "--help" ? 0 : 1);
+    }
+  }
+  if (a.scale != "smoke" && a.scale != "full") {
+    std::fprintf(stderr, "reproduce_%s: --scale must be smoke or full\n", set.c_str());
+    std::exit(1);
+  }
+  return a;
+}
+
+}  // namespace kolsky::repro

@@ -1,0 +1,53 @@
+// Report figures through gnuplot: one .dat + .gp pair per plot in <out_dir>/plots_src/ (kept so a
+// reader can edit and re-run them), rendered to <out_dir>/<file>.png with pngcairo 900x600.
+// gnuplot is optional: without it (or if it fails) the report says "plot not generated".
+#pragma once
+#include <string>
+#include <vector>
+
+namespace kolsky::harness {
+
+/// A measured or computed line. style: "lines" | "points" | "linespoints" | "dashed" | "steps".
+struct PlotSeries {
+  std::string label;
+  std::vector<double> x, y;
+  std::string style = "lines";
+};
+
+/// A shaded band lo(x)..hi(x) (tolerance envelope, experimental scatter).
+struct PlotBand {
+  std::string label;
+  std::vector<double> x, lo, hi;
+};
+
+/// Reference points, with symmetric y error bars when yerr is non-empty (same length as x).
+struct PlotPoints {
+  std::string label;
+  std::vector<double> x, y, yerr;
+};
+
+struct Plot {
+  std::string file;  // "stress_strain.png": a plain file name in out_dir, ending in .png
+  std::string title, xlabel, ylabel;
+  std::vector<PlotSeries> series;
+  std::vector<PlotBand> bands;
+  std::vector<PlotPoints> reference_points;
+  bool logx = false, logy = false;
+};
+
+/// Outcome of one plot: ok, or why not (shown in the report instead of the image).
+struct PlotResult {
+  bool ok = false;
+  std::string message;
+};
+
+/// The gnuplot the build found (compile definition GNUPLOT_EXECUTABLE); "" when there is none.
+std::string default_gnuplot();
+
+/// Writes out_dir/plots_src/<stem>.{dat,gp} and, when gnuplot is a usable executable, renders
+/// out_dir/<file> (written to a temporary name and renamed, so a failed run leaves no half PNG).
+/// Throws std::invalid_argument for a bad file name or mismatched vector lengths (driver bugs);
+/// gnuplot failures are returned, with the tail of its output, not thrown.
+PlotResult render_plot(const Plot& p, const std::string& out_dir, const std::string& gnuplot);
+
+}  // namespace kolsky::harness

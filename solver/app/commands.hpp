@@ -1,0 +1,28 @@
+// The kolsky subcommands and their shared option parsing.
+#pragma once
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace kolsky::app {
+
+/// Wrong command-line usage (exit code 1).
+struct UsageError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+int cmd_run(const std::vector<std::string>& args);
+int cmd_analyze(const std::vector<std::string>& args);
+int cmd_defaults(const std::vector<std::string>& args);
+
+/// Parsed options: positional arguments plus "-o", "--bars", "--threads" values and flags.
+struct Options {
+  std::vector<std::string> positional;
+  std::string output, bars;
+  int threads = 0;
+  bool quiet = false;
+};
+/// `allowed` lists the option names this command takes (e.g. {"-o", "--quiet"}).
+Options parse_options(const std::vector<std::string>& args, const std::vector<std::string>& allowed);
+
+}  // namespace kolsky::app

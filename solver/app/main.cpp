@@ -1,0 +1,61 @@
+// kolsky: command-line front of the SHPB suite. Subcommands: run, analyze, defaults.
+// Exit codes: 0 ok, 1 usage/internal error, 2 bad input (InputError), 3 numerical failure.
+#include <cstdio>
+#include <cstring>
+#include <exception>
+#include <string>
+#include <vector>
+
+#include "app/commands.hpp"
+#include "core/errors.hpp"
+
+namespace {
+
+const char* kUsage =
+    "kolsky - split Hopkinson pressure bar (Kolsky bar) simulation and analysis\n"
+    "\n"
+    "usage:\n"
+    "  kolsky run SCENE.json [-o OUT.h5] [--threads N] [--quiet]\n"
+    "      run a scene (docs/scene.md); writes HDF5 probes and prints a summary\n"
+    "  kolsky analyze GAUGES.csv --bars BARS.json [-o OUT.csv] [--quiet]\n"
+    "      process strain-gauge records (time, incident strain, transmitted strain) into\n"
+    "      specimen strain, strain rate, front/back/average stress, alpha(t), wave energies\n"
+    "  kolsky defaults\n"
+    "      every scene and BARS.json parameter with its default, unit and description\n"
+    "  kolsky --help | --version\n"
+    "\n"
+    "exit codes: 0 ok, 1 usage error, 2 bad input, 3 numerical failure (output kept, marked\n"
+    "incomplete)\n";
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  std::vector<std::string> args(argv + 1, argv + argc);
+  if (args.empty() || args[0] == "--help" || args[0] == "-h" || args[0] == "help") {
+    std::fputs(kUsage, args.empty() ? stderr : stdout);
+    return args.empty() ? 1 : 0;
+  }
+  if (args[0] == "--version") {
+    std::printf("kolsky %s (%s, %s)\n", KOLSKY_VERSION, KOLSKY_GIT_SHA, KOLSKY_BUILD_TYPE);
+    return 0;
+  }
+  const std::string cmd = args[0];
+  args.erase(args.begin());
+  try {
+    if (cmd == "run") return kolsky::app::cmd_run(args);
+    if (cmd == "analyze") return kolsky::app::cmd_analyze(args);
+    if (cmd == "defaults") return kolsky::app::cmd_defaults(args);
+    std::fprintf(stderr, "kolsky: unknown command '%s' (run, analyze, defaults; see --help)\n",
+                 cmd.c_str());
+    return 1;
+  } catch (const kolsky::app::UsageError& e) {
+    std::fprintf(stderr, "kolsky %s: %s (see kolsky --help)\n", cmd.c_str(), e.what());
+    return 1;
+  } catch (const kolsky::InputError& e) {
+    std::fprintf(stderr, "kolsky: error: %s\n", e.what());
+    return kolsky::kExitInputError;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "kolsky: internal error: %s\n", e.what());
+    return 1;
+  }
+}

@@ -1,0 +1,45 @@
+#include <algorithm>
+#include <string>
+
+#include "app/commands.hpp"
+#include "scene/scene.hpp"
+
+namespace kolsky::app {
+
+Options parse_options(const std::vector<std::string>& args, const std::vector<std::string>& allowed) {
+  Options o;
+  auto takes = [&](const std::string& a) {
+    return std::find(allowed.begin(), allowed.end(), a) != allowed.end();
+  };
+  for (size_t i = 0; i < args.size(); ++i) {
+    const std::string& a = args[i];
+    if (a.size() > 1 && a[0] == '-') {
+      if (!takes(a)) throw UsageError("unknown option '" + a + "'");
+      if (a == "--quiet") { o.quiet = true; continue; }
+      if (i + 1 >= args.size()) throw UsageError("option '" + a + "' needs a value");
+      const std::string& v = args[++i];
+      if (a == "-o") o.output = v;
+      else if (a == "--bars") o.bars = v;
+      else if (a == "--threads") {
+        try {
+          size_t used = 0;
+          o.threads = std::stoi(v, &used);
+          if (used != v.size() || o.threads < 1) throw std::invalid_argument(v);
+        } catch (const std::exception&) {
+          throw UsageError("--threads needs a whole number >= 1, got '" + v + "'");
+        }
+      }
+      continue;
+    }
+    o.positional.push_back(a);
+  }
+  return o;
+}
+
+int cmd_defaults(const std::vector<std::string>& args) {
+  if (!args.empty()) throw UsageError("takes no arguments");
+  std::fputs(scene::format_defaults().c_str(), stdout);
+  return 0;
+}
+
+}  // namespace kolsky::app

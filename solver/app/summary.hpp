@@ -1,0 +1,16 @@
+// Human-readable summaries of an analysed SHPB record (shared by `run` and `analyze`).
+#pragma once
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "shpb/analysis.hpp"
+
+namespace kolsky::app {
+
+/// Key numbers of an analysed record: peak stresses, final strain, mean strain rate over the
+/// loading window, first time alpha stays below 0.05, energies and dissipation, indices.
+nlohmann::json summarize(const shpb::FaceWaves& w, const shpb::SpecimenHistory& h);
+/// Plain-text rendering, one quantity per line.
+std::string format_summary(const nlohmann::json& s);
+
+}  // namespace kolsky::app

@@ -1,0 +1,34 @@
+// Scene-local CSV reader for the two tables a scene can reference: a tabulated pulse
+// (time_s, stress_pa) and a compaction loading curve (strain, stress_pa). Deliberately tiny
+// and independent of solver/io, which sits above scene in the layering (docs/architecture.md).
+// Format: '#' comment lines and blank lines skipped, an optional header row, fields separated
+// by commas or whitespace, exactly two numeric fields per row, SI units.
+// Errors: InputError(csv_path, "line N", rule), or path "" for whole-file problems.
+#pragma once
+#include <string>
+#include <vector>
+
+#include "core/table.hpp"
+
+namespace kolsky::scene {
+
+/// Two numeric columns, with the 1-based file line of each row for error messages.
+struct CsvColumns {
+  std::vector<double> x, y;
+  std::vector<size_t> line;
+};
+
+/// Reads a two-column table; x_name/y_name name the columns in error messages. The first
+/// non-comment row is taken as a header if any of its fields is not a number.
+CsvColumns read_two_column_csv(const std::string& path, const std::string& x_name,
+                               const std::string& y_name);
+
+/// Pulse table (time_s, stress_pa): at least 2 rows, time strictly increasing.
+Table1D load_pulse_table(const std::string& path);
+
+/// Loading curve (strain, stress_pa), compression positive: first row (0, 0), both columns
+/// strictly increasing. The table extrapolates linearly past its last strain, so a specimen
+/// compacted beyond the measured range keeps stiffening instead of flowing at constant stress.
+Table1D load_loading_curve(const std::string& path);
+
+}  // namespace kolsky::scene

@@ -1,0 +1,324 @@
+// The one parameter table of scene files and BARS.json. Defaults are taken from the default
+// member initializers of the structs the parsers fill (so table and structs cannot drift apart)
+// except where a key is required or its default depends on another key. Ranges are the
+// validation rules; the parsers apply them by looking the key up here.
+#include "scene/schema.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+
+#include "bar/material.hpp"
+#include "bar/pulse.hpp"
+#include "bar/specimen_column.hpp"
+#include "shpb/analysis.hpp"
+#include "shpb/experiment.hpp"
+#include "shpb/gauge_processing.hpp"
+
+namespace kolsky::scene {
+
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+const Range kNoRange{};
+const Range kPositive{0.0, kInf, true, false};
+const Range kNonNegative{0.0, kInf, false, false};
+const Range kPoisson{0.0, 0.5, true, true};
+const Range kOpenUnit{0.0, 1.0, true, true};
+const Range kHalfOpenUnitUpper{0.0, 1.0, true, false};  // (0, 1]
+const Range kHalfOpenUnitLower{0.0, 1.0, false, true};  // [0, 1)
+// Below 2 elements the column has no interior node; above 1e5 a 1-D column is only slow.
+const Range kElementCount{2.0, 100000.0, false, false};
+// Below 4 balls a chain is no longer a wave guide: incident and reflected waves overlap at
+// every ball, so there is nothing for a gauge to separate.
+const Range kSphereCount{4.0, kInf, false, false, true};
+
+std::string type_name(ValueType t) {
+  switch (t) {
+    case ValueType::number: return "number";
+    case ValueType::integer: return "integer";
+    case ValueType::boolean: return "boolean";
+    case ValueType::string: return "string";
+    case ValueType::choice: return "choice";
+    case ValueType::path: return "path";
+    case ValueType::number_list: return "number[]";
+  }
+  return "?";
+}
+
+std::string default_text(ValueType t, const nlohmann::json& v) {
+  switch (t) {
+    case ValueType::number: return format_number(v.get<double>());
+    case ValueType::boolean: return v.get<bool>() ? "true" : "false";
+    case ValueType::integer: return std::to_string(v.get<long long>());
+    case ValueType::choice: return v.get<std::string>();
+    default: return v.dump();
+  }
+}
+
+/// Collects rows for one schema; `def` null marks a required key.
+class TableBuilder {
+ public:
+  TableBuilder(std::vector<ParamSpec>& rows, std::string schema)
+      : rows_(rows), schema_(std::move(schema)) {}
+
+  void add(ValueType type, const std::string& path, nlohmann::json def, const std::string& unit,
+           const Range& range, const std::string& description, const std::string& applies = "",
+           std::vector<std::string> choices = {}) {
+    ParamSpec p;
+    p.type = type;
+    p.required = def.is_null();
+    p.default_value = std::move(def);
+    p.range = range;
+    p.choices = std::move(choices);
+    p.doc = {schema_,
+             path,
+             type_name(type),
+             p.required ? "required" : default_text(type, p.default_value),
+             unit,
+             description,
+             applies};
+    rows_.push_back(std::move(p));
+  }
+  /// A key whose default is derived from other keys by the parser; `text` documents how.
+  void add_derived(ValueType type, const std::string& path, const std::string& text,
+                   const std::string& unit, const Range& range, const std::string& description) {
+    add(type, path, nullptr, unit, range, description);
+    rows_.back().required = false;
+    rows_.back().doc.default_value = text;
+  }
+
+ private:
+  std::vector<ParamSpec>& rows_;
+  std::string schema_;
+};
+
+const nlohmann::json kRequired = nullptr;
+using VT = ValueType;
+
+void add_scene_bar(TableBuilder& t, const std::string& side) {
+  const std::string p = "bars." + side + ".";
+  const bar::BarMaterial m;
+  const bar::BarGeometry g;
+  t.add(VT::number, p + "length", kRequired, "m", kPositive, "Bar length");
+  t.add(VT::number, p + "diameter", g.diameter, "m", kPositive,
+        "Bar diameter (also the ball diameter of a sphere chain)");
+  t.add(VT::number, p + "youngs_modulus", m.youngs_modulus, "Pa", kPositive, "Young's modulus E");
+  t.add(VT::number, p + "density", m.density, "kg/m^3", kPositive, "Density rho");
+  t.add(VT::number, p + "poisson_ratio", m.poisson_ratio, "-", kPoisson,
+        "Poisson ratio (dispersion correction only)");
+  t.add_derived(VT::number_list, p + "gauges", "[length/2]", "m", kPositive,
+                "Gauge distances from the specimen face, each strictly inside (0, length)");
+  t.add(VT::integer, p + "n_spheres", shpb::BarSpec{}.n_spheres, "-", kSphereCount,
+        "Ball count; 0 = round(length/diameter), Eq. 4.3", "bars.kind=sphere_chain");
+}
+
+void add_bars_file_bar(TableBuilder& t, const std::string& side) {
+  const std::string p = side + ".";
+  const shpb::AnalysisBar b;
+  t.add(VT::number, p + "youngs_modulus", b.youngs_modulus, "Pa", kPositive, "Young's modulus E");
+  t.add(VT::number, p + "density", b.density, "kg/m^3", kPositive, "Density rho");
+  t.add(VT::number, p + "poisson_ratio", b.poisson_ratio, "-", kPoisson,
+        "Poisson ratio (dispersion correction only)");
+  t.add(VT::number, p + "diameter", b.diameter, "m", kPositive, "Bar diameter");
+  t.add(VT::number, p + "gauge_distance", kRequired, "m", kPositive,
+        "Distance from the strain gauge to the specimen face");
+}
+
+std::vector<ParamSpec> build_table() {
+  std::vector<ParamSpec> rows;
+  TableBuilder s(rows, "scene");
+  s.add(VT::string, "title", std::string(), "-", kNoRange,
+        "Free-text title, copied into the outputs");
+  s.add(VT::choice, "bars.kind", "characteristic", "-", kNoRange,
+        "Bar model: characteristic (exact delay line) or sphere_chain (Sec. 4.3)", "",
+        {"characteristic", "sphere_chain"});
+  add_scene_bar(s, "incident");
+  add_scene_bar(s, "transmission");
+
+  const bar::TrapezoidPulse trap;
+  const bar::TabulatedPulse tab;
+  s.add(VT::choice, "pulse.kind", kRequired, "-", kNoRange,
+        "Incident stress history at the free end: trapezoid, half_sine or tabulated", "",
+        {"trapezoid", "half_sine", "tabulated"});
+  s.add(VT::number, "pulse.amplitude", kRequired, "Pa", kPositive,
+        "Peak stress, compression positive", "pulse.kind=trapezoid|half_sine");
+  s.add(VT::number, "pulse.rise_time", trap.rise_time, "s", kNonNegative, "Linear rise time",
+        "pulse.kind=trapezoid");
+  s.add(VT::number, "pulse.fall_time", trap.fall_time, "s", kNonNegative,
+        "Linear fall time; rise_time + fall_time <= duration", "pulse.kind=trapezoid");
+  s.add(VT::number, "pulse.duration", kRequired, "s", kPositive, "Total pulse length",
+        "pulse.kind=trapezoid|half_sine");
+  s.add(VT::number, "pulse.delay", trap.delay, "s", kNonNegative,
+        "Start time of the pulse at the free end");
+  s.add(VT::path, "pulse.file", kRequired, "path", kNoRange,
+        "CSV table time_s,stress_pa, time strictly increasing", "pulse.kind=tabulated");
+  s.add(VT::number, "pulse.scale", tab.scale, "-", kPositive,
+        "Factor applied to the tabulated stress", "pulse.kind=tabulated");
+
+  const bar::ColumnParams col;
+  s.add(VT::choice, "specimen.model", kRequired, "-", kNoRange,
+        "Specimen material law: elastic or compaction", "", {"elastic", "compaction"});
+  s.add(VT::number, "specimen.length", col.length, "m", kPositive, "Specimen length L_s");
+  s.add(VT::number, "specimen.diameter", col.diameter, "m", kPositive,
+        "Specimen diameter, at most 4 x the bar diameter");
+  s.add(VT::number, "specimen.density", col.density, "kg/m^3", kPositive, "Specimen density");
+  s.add(VT::integer, "specimen.n_elements", col.n_elements, "-", kElementCount,
+        "Two-node elements along the specimen");
+  s.add(VT::number, "specimen.constrained_modulus", kRequired, "Pa", kPositive,
+        "Constrained (uniaxial-strain) modulus D", "specimen.model=elastic");
+  s.add(VT::path, "specimen.loading_curve", kRequired, "path", kNoRange,
+        "CSV table strain,stress_pa from (0, 0), both columns strictly increasing",
+        "specimen.model=compaction");
+  s.add(VT::number, "specimen.unloading_modulus", kRequired, "Pa", kPositive,
+        "Slope of unloading/reloading from the largest strain reached",
+        "specimen.model=compaction");
+
+  const shpb::TimeSpec time;
+  s.add(VT::number, "time.end", kRequired, "s", kPositive, "Simulated time");
+  s.add(VT::number, "time.dt", time.dt, "s", kNonNegative,
+        "Time step; 0 = safety_factor x stable time step");
+  s.add(VT::number, "time.safety_factor", time.safety_factor, "-", kHalfOpenUnitUpper,
+        "Fraction of the stable time step used when dt = 0");
+  s.add(VT::boolean, "time.check_stability", time.check_stability, "-", kNoRange,
+        "Stop on non-finite values or energy growth (false only to test the detector)");
+  s.add(VT::number, "time.energy_tolerance", time.energy_tolerance, "-", kPositive,
+        "Relative energy growth that counts as a blow-up");
+  s.add(VT::number, "output.interval", shpb::OutputSpec{}.interval, "s", kNonNegative,
+        "Probe sampling interval; 0 = every 1e-6 s (rounded to whole steps)");
+
+  TableBuilder b(rows, "bars");
+  add_bars_file_bar(b, "incident");
+  add_bars_file_bar(b, "transmission");
+  const shpb::AnalysisSetup setup;
+  b.add(VT::number, "specimen.length", kRequired, "m", kPositive, "Specimen length L_s");
+  b.add(VT::number, "specimen.diameter", setup.specimen_diameter, "m", kPositive,
+        "Specimen diameter, at most 4 x the bar diameter");
+  const shpb::GaugeOptions gauge;
+  b.add(VT::number, "processing.threshold_fraction", gauge.threshold_fraction, "-", kOpenUnit,
+        "Pulse-start threshold as a fraction of the incident peak");
+  b.add(VT::number, "processing.noise_sigmas", gauge.noise_sigmas, "-", kNonNegative,
+        "Detection threshold floor in units of the pre-trigger noise sigma");
+  b.add(VT::number, "processing.pretrigger_fraction", gauge.pretrigger_fraction, "-", kOpenUnit,
+        "Fallback pre-trigger window (fraction of the record) if the pulse starts early");
+  b.add(VT::boolean, "processing.dispersion_correction", gauge.dispersion_correction, "-",
+        kNoRange, "First Pochhammer-Chree mode correction instead of a pure time shift");
+  b.add(VT::number, "processing.duration", gauge.duration, "s", kNonNegative,
+        "Analysis window after the incident arrival; 0 = automatic");
+  b.add(VT::number, "processing.alpha_floor_fraction", shpb::AnalysisOptions{}.alpha_floor_fraction,
+        "-", kHalfOpenUnitLower,
+        "alpha(t) is reported only where abs(stress_avg) >= this x its peak");
+  return rows;
+}
+
+std::string bound(double v) { return format_number(v); }
+
+}  // namespace
+
+bool Range::contains(double v) const {
+  if (!std::isfinite(v)) return false;
+  if (or_zero && v == 0.0) return true;
+  const bool above = lo_open ? v > lo : v >= lo;
+  const bool below = hi_open ? v < hi : v <= hi;
+  return above && below;
+}
+
+std::string Range::text() const {
+  const bool has_lo = std::isfinite(lo), has_hi = std::isfinite(hi);
+  std::string s;
+  if (has_lo && has_hi)
+    s = (lo_open ? "(" : "[") + bound(lo) + ", " + bound(hi) + (hi_open ? ")" : "]");
+  else if (has_lo)
+    s = (lo_open ? "> " : ">= ") + bound(lo);
+  else if (has_hi)
+    s = (hi_open ? "< " : "<= ") + bound(hi);
+  return s.empty() || !or_zero ? s : "0 or " + s;
+}
+
+std::string Range::describe() const {
+  const std::string t = text();
+  if (t.empty()) return "must be finite";
+  const bool interval = std::isfinite(lo) && std::isfinite(hi);
+  if (or_zero) return "must be 0 or " + std::string(interval ? "in " : "") + t.substr(5);
+  return "must be " + std::string(interval ? "in " : "") + t;
+}
+
+const std::vector<ParamSpec>& schema_table() {
+  static const std::vector<ParamSpec> table = build_table();
+  return table;
+}
+
+const ParamSpec* find_param(std::string_view schema, std::string_view path) {
+  for (const ParamSpec& p : schema_table())
+    if (p.doc.schema == schema && p.doc.path == path) return &p;
+  return nullptr;
+}
+
+std::string describe_applies_to(const std::string& applies_to) {
+  const auto eq = applies_to.find('=');
+  if (eq == std::string::npos) return applies_to;
+  std::string values = applies_to.substr(eq + 1);
+  for (size_t bar = values.find('|'); bar != std::string::npos; bar = values.find('|'))
+    values.replace(bar, 1, " or ");
+  return applies_to.substr(0, eq) + " = " + values;
+}
+
+std::string format_number(double v) {
+  char buf[40];
+  const double a = std::fabs(v);
+  // Plain notation where it stays short; otherwise engineering notation (exponent a multiple
+  // of 3) so that 200e9 Pa and 50e-6 s read as they are usually written.
+  if (a == 0.0 || (a >= 1e-3 && a < 1e6)) {
+    std::snprintf(buf, sizeof buf, "%.12g", v);
+    return buf;
+  }
+  int e3 = static_cast<int>(std::floor(std::log10(a) / 3.0)) * 3;
+  double m = v / std::pow(10.0, e3);
+  if (std::fabs(m) >= 1000.0 - 1e-9) m /= 1000.0, e3 += 3;  // log10 rounding at 1e9, 1e-6, ...
+  if (std::fabs(m) < 1.0 - 1e-12) m *= 1000.0, e3 -= 3;
+  std::snprintf(buf, sizeof buf, "%.12ge%d", m, e3);
+  return buf;
+}
+
+const std::vector<ParamDoc>& parameters() {
+  static const std::vector<ParamDoc> docs = [] {
+    std::vector<ParamDoc> d;
+    for (const ParamSpec& p : schema_table()) d.push_back(p.doc);
+    return d;
+  }();
+  return docs;
+}
+
+std::string format_defaults() {
+  const std::pair<const char*, const char*> groups[] = {
+      {"scene", "Scene file (kolsky run SCENE.json)"}, {"bars", "BARS.json (kolsky analyze)"}};
+  std::string out;
+  for (const auto& [schema, title] : groups) {
+    std::vector<std::array<std::string, 6>> rows{
+        {"key", "type", "default", "unit", "range", "description"}};
+    for (const ParamSpec& p : schema_table()) {
+      const ParamDoc& d = p.doc;
+      if (d.schema != schema) continue;
+      std::string desc = d.description;
+      if (!d.applies_to.empty()) desc += " (" + describe_applies_to(d.applies_to) + ")";
+      rows.push_back({d.path, d.type, d.default_value, d.unit, p.range.text(), desc});
+    }
+    std::array<size_t, 6> width{};
+    for (const auto& r : rows)
+      for (size_t c = 0; c < r.size(); ++c) width[c] = std::max(width[c], r[c].size());
+    if (!out.empty()) out += "\n";
+    out += std::string(title) + "\n";
+    for (const auto& r : rows) {
+      std::string line = " ";
+      for (size_t c = 0; c < r.size(); ++c) {
+        line += " " + r[c];
+        if (c + 1 < r.size()) line += std::string(width[c] - r[c].size() + 1, ' ');
+      }
+      out += line + "\n";
+    }
+  }
+  return out;
+}
+
+}  // namespace kolsky::scene
