@@ -9,6 +9,7 @@
 #include "app/commands.hpp"
 #include "app/summary.hpp"
 #include "core/progress.hpp"
+#include "io/csv.hpp"
 #include "io/hdf5_run.hpp"
 #include "scene/scene.hpp"
 #include "shpb/simulation.hpp"
@@ -50,7 +51,7 @@ io::RunRecord to_record(const scene::Scene& sc, const shpb::RunResult& r,
 }  // namespace
 
 int cmd_run(const std::vector<std::string>& args) {
-  const Options o = parse_options(args, {"-o", "--threads", "--quiet"});
+  const Options o = parse_options(args, {"-o", "--threads", "--quiet", "--gauges-csv"});
   if (o.positional.size() != 1) throw UsageError("needs exactly one SCENE.json");
   const std::string& file = o.positional[0];
   if (o.threads > 0) omp_set_num_threads(o.threads);
@@ -78,6 +79,18 @@ int cmd_run(const std::vector<std::string>& args) {
   const auto h = shpb::analyze(waves, setup);
   const auto summary = summarize(waves, h);
   io::write_run_hdf5(out, to_record(sc, r, h, summary));
+  if (!o.gauges_csv.empty()) {
+    // The first gauge of each bar, in the input format of `kolsky analyze`.
+    io::CsvTable g;
+    g.header = {"time_s", "incident_strain", "transmitted_strain"};
+    g.columns = {r.t, r.probe("incident_gauge_strain").value,
+                 r.probe("transmission_gauge_strain").value};
+    io::write_csv(o.gauges_csv, g,
+                  "simulated gauge record of " + file + " (strain as measured: compression "
+                  "negative); gauges at " + std::to_string(sc.spec.incident.gauges.front()) +
+                  " m (incident) and " + std::to_string(sc.spec.transmission.gauges.front()) +
+                  " m (transmission) from the specimen faces");
+  }
 
   std::printf("kolsky run: %s -> %s (%s)\n", file.c_str(), out.c_str(),
               r.complete ? "complete" : "INCOMPLETE");

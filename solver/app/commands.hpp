@@ -18,7 +18,7 @@ int cmd_defaults(const std::vector<std::string>& args);
 /// Parsed options: positional arguments plus "-o", "--bars", "--threads" values and flags.
 struct Options {
   std::vector<std::string> positional;
-  std::string output, bars;
+  std::string output, bars, gauges_csv;
   int threads = 0;
   bool quiet = false;
 };

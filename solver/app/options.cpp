@@ -20,6 +20,7 @@ Options parse_options(const std::vector<std::string>& args, const std::vector<st
       const std::string& v = args[++i];
       if (a == "-o") o.output = v;
       else if (a == "--bars") o.bars = v;
+      else if (a == "--gauges-csv") o.gauges_csv = v;
       else if (a == "--threads") {
         try {
           size_t used = 0;

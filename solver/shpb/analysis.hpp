@@ -76,16 +76,16 @@ std::vector<double> wave_energy(const std::vector<double>& sigma, double dt, dou
 /// Eq. 2.15: |front - back| / ((front + back)/2); NaN where |(front+back)/2| < floor.
 double stress_nonuniformity(double stress_front, double stress_back, double floor);
 
-/// First index at which alpha stays below `threshold` ... or -1 if it never does. "Stays" means
-/// for at least `hold` consecutive samples (NaN samples break a run).
+/// First index at which alpha stays below `threshold` (strictly) for at least `hold`
+/// consecutive samples, or -1 if it never does. NaN samples break a run; hold < 1 counts as 1.
 long first_equilibrium_index(const std::vector<double>& alpha, double threshold, long hold);
 
 /// Equilibrium quality indices used by open SHPB tools (docs/analysis.md gives the formulas and
 /// sources: DynaMat-Platform validity_assessment.py; SHPB_Processing.py strain difference),
 /// evaluated over samples [begin, end).
 struct EquilibriumIndices {
-  double force_balance = 0;        ///< FBC = 1 - mean|F_front - F_back| / max|F|
-  double stress_equilibrium = 0;   ///< SEQI = exp(-NRMSE(front, back))
+  double force_balance = 0;        ///< FBC = 1 - mean(|F_front - F_back| / max(F_front, F_back))
+  double stress_equilibrium = 0;   ///< SEQI = exp(-RMSE(front - back) / range(front))
   double mean_alpha = 0;           ///< mean of the finite alpha samples
   double max_strain_difference = 0;///< max |e_i + e_r - e_t| (Eq. 1.4 residual, bar strain)
 };

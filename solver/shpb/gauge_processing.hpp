@@ -3,8 +3,10 @@
 //  2. Pulse start: first sample where |incident| exceeds max(threshold_fraction * peak,
 //     noise_sigmas * sigma_noise), then walked back to where the rising edge leaves the noise
 //     (documented in docs/analysis.md).
-//  3. Window separation at the incident gauge: incident = record before start + 2 d_I / c,
-//     reflected = record after it (the pulse must be shorter than 2 d_I / c; else a warning).
+//  3. Window separation at the incident gauge: the reflected wave arrives at start + 2 d_I / c;
+//     incident = record before the middle of the quiet gap between the incident's end and that
+//     arrival, reflected = record after it (the pulse must be shorter than 2 d_I / c; else the
+//     split is at the arrival itself, with a warning).
 //  4. Shift to the faces by the gauge-to-face travel time (+d_I/c incident, -d_I/c reflected,
 //     -d_T/c transmitted), optionally with the first Pochhammer-Chree mode dispersion
 //     correction (dispersion.hpp) instead of a pure time shift.
@@ -33,7 +35,7 @@ struct GaugeOptions {
 
 /// What the processing found, for the summary and the output's metadata.
 struct GaugeReport {
-  double offset_incident = 0, offset_transmitted = 0;   ///< removed offsets (strain)
+  double offset_incident = 0, offset_transmitted = 0;   ///< removed offsets (strain, as measured)
   double noise_incident = 0, noise_transmitted = 0;     ///< pre-trigger sigma (strain)
   double start_time = 0;        ///< detected incident start at its gauge (record clock, s)
   double detection_level = 0;   ///< the strain level used for detection
