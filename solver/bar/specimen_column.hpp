@@ -4,13 +4,13 @@
 //   TabulatedCompaction  loading along a table sigma(eps) (the compaction EOS of Sec. 2.3.4
 //                        used as axial stress in 1-D), unloading/reloading along a line of
 //                        slope unloading_modulus from the largest strain reached; no tension.
-// Coupling (docs/architecture.md): the bars own the face nodes. The column receives the face
-// intrusions (displacement into the specimen, m) and returns the face forces (compression
-// positive, N); this is the interface every specimen model (FE, DEM) implements.
+// Coupling (core/specimen_coupling.hpp): the bars own the face nodes; the column receives the
+// face intrusions and returns the face forces, the interface every specimen model implements.
 #pragma once
 #include <variant>
 #include <vector>
 
+#include "core/specimen_coupling.hpp"
 #include "core/table.hpp"
 
 namespace kolsky::bar {
@@ -34,24 +34,9 @@ struct ColumnParams {
   ColumnMaterial material = LinearElastic{};
 };
 
-/// Face kinematics handed to a specimen: intrusion (m) and intrusion rate (m/s) of each face,
-/// positive when the face moves into the specimen.
-struct FaceState {
-  double intrusion_front = 0, intrusion_back = 0;
-  double rate_front = 0, rate_back = 0;
-};
-
-/// Forces the specimen exerts on the two bar faces, compression positive (N).
-struct FaceForces {
-  double front = 0, back = 0;
-};
-
-/// Energy held by the specimen (J): kinetic plus the work done on its material so far
-/// (elastic energy plus what plasticity/compaction dissipated).
-struct SpecimenEnergy {
-  double kinetic = 0, internal_work = 0;
-  double total() const { return kinetic + internal_work; }
-};
+using kolsky::FaceForces;
+using kolsky::FaceState;
+using kolsky::SpecimenEnergy;
 
 class SpecimenColumn {
  public:
