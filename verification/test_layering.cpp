@@ -1,0 +1,78 @@
+// House rules that keep the tree readable, checked on the sources themselves:
+//  - modules depend downward only (docs/architecture.md): core <- time <- physics (bar, fe, dem,
+//    eos, psd) <- shpb <- io <- scene <- app; physics never includes io, scene or app;
+//  - every number a reproduction target quotes from the dissertation is also recorded, with
+//    its provenance, under data/digitized/ (same id, same value).
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <regex>
+#include <set>
+#include <string>
+
+namespace fs = std::filesystem;
+
+namespace {
+
+const std::map<std::string, int> kLayer = {{"core", 0}, {"time", 1}, {"bar", 2}, {"fe", 2},
+                                           {"dem", 2},  {"eos", 2},  {"psd", 2}, {"shpb", 3},
+                                           {"io", 4},   {"scene", 5}, {"app", 6}};
+
+TEST(Layering, ModulesIncludeOnlyLowerLayers) {
+  const fs::path solver = fs::path(KOLSKY_SOURCE_DIR) / "solver";
+  const std::regex include_re("#include \"([a-z_]+)/");
+  int files = 0;
+  for (const auto& entry : fs::recursive_directory_iterator(solver)) {
+    if (!entry.is_regular_file()) continue;
+    const auto ext = entry.path().extension();
+    if (ext != ".hpp" && ext != ".cpp") continue;
+    const std::string module = entry.path().parent_path().filename().string();
+    ASSERT_TRUE(kLayer.count(module)) << "unknown module folder " << module;
+    ++files;
+    std::ifstream f(entry.path());
+    std::string line;
+    while (std::getline(f, line)) {
+      std::smatch m;
+      if (!std::regex_search(line, m, include_re)) continue;
+      const std::string dep = m[1];
+      ASSERT_TRUE(kLayer.count(dep)) << entry.path() << " includes unknown module " << dep;
+      // Physics modules are siblings: none includes another (they meet in shpb).
+      const bool ok = dep == module || kLayer.at(dep) < kLayer.at(module);
+      EXPECT_TRUE(ok) << entry.path().string() << " (" << module << ") includes " << dep
+                      << ": modules may include only lower layers";
+    }
+  }
+  EXPECT_GT(files, 10);
+}
+
+TEST(Provenance, TargetReferencesMatchDigitizedValues) {
+  const fs::path root(KOLSKY_SOURCE_DIR);
+  std::map<std::string, double> digitized;
+  for (const auto& entry : fs::recursive_directory_iterator(root / "data" / "digitized")) {
+    if (entry.path().filename() != "reported.json") continue;
+    std::ifstream f(entry.path());
+    for (const auto& v : nlohmann::json::parse(f).at("values")) digitized[v.at("id")] = v.at("value");
+  }
+  int matched = 0;
+  for (const auto& entry : fs::directory_iterator(root / "reproductions")) {
+    const fs::path t = entry.path() / "targets.json";
+    if (!fs::exists(t)) continue;
+    std::ifstream f(t);
+    for (const auto& target : nlohmann::json::parse(f).at("targets")) {
+      const std::string id = target.at("id");
+      const auto& ref = target.at("reference");
+      if (!digitized.count(id) || !ref.contains("value")) continue;
+      const double want = digitized.at(id);
+      const double scale = target.value("unit", "") == "MPa" ? 1e6 : 1.0;  // data files are SI
+      EXPECT_NEAR(ref.at("value").get<double>() * scale, want, 1e-9 * std::abs(want))
+          << id << ": targets.json and data/digitized disagree";
+      ++matched;
+    }
+  }
+  EXPECT_GE(matched, 4) << "targets quoting the dissertation should be recorded in data/digitized";
+}
+
+}  // namespace
