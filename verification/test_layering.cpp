@@ -54,14 +54,17 @@ TEST(Provenance, TargetReferencesMatchDigitizedValues) {
   for (const auto& entry : fs::recursive_directory_iterator(root / "data" / "digitized")) {
     if (entry.path().filename() != "reported.json") continue;
     std::ifstream f(entry.path());
-    for (const auto& v : nlohmann::json::parse(f).at("values")) digitized[v.at("id")] = v.at("value");
+    const auto doc = nlohmann::json::parse(f);  // kept alive: ranging over a temporary's member dangles
+    for (const auto& v : doc.at("values"))
+      digitized[v.at("id").get<std::string>()] = v.at("value").get<double>();
   }
   int matched = 0;
   for (const auto& entry : fs::directory_iterator(root / "reproductions")) {
     const fs::path t = entry.path() / "targets.json";
     if (!fs::exists(t)) continue;
     std::ifstream f(t);
-    for (const auto& target : nlohmann::json::parse(f).at("targets")) {
+    const auto doc = nlohmann::json::parse(f);
+    for (const auto& target : doc.at("targets")) {
       const std::string id = target.at("id");
       const auto& ref = target.at("reference");
       if (!digitized.count(id) || !ref.contains("value")) continue;
@@ -72,6 +75,7 @@ TEST(Provenance, TargetReferencesMatchDigitizedValues) {
       ++matched;
     }
   }
+  EXPECT_GE(digitized.size(), 4u) << "no data/digitized/*/reported.json found";
   EXPECT_GE(matched, 4) << "targets quoting the dissertation should be recorded in data/digitized";
 }
 
