@@ -6,6 +6,8 @@
 // Measured errors are written as test properties (--gtest_output=json shows them).
 #include <gtest/gtest.h>
 
+#include "test_support.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -21,11 +23,7 @@ namespace {
 
 constexpr double pi = std::numbers::pi;
 
-void record(const std::string& key, double value) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.4e", value);
-  ::testing::Test::RecordProperty(key, buf);
-}
+using kolsky::testing::record;
 
 /// Exact Rayleigh speed ratio c_R/c_S: root of (2 - e^2)^2 = 4 sqrt(1 - e^2 k^2) sqrt(1 - e^2),
 /// k^2 = (c_S/c_L)^2 = (1 - 2 nu) / (2 (1 - nu)), by bisection on (0.5, 1).

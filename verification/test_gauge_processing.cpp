@@ -7,6 +7,8 @@
 // negates them (gauges read compression negative), adds offsets and seeded Box-Muller noise.
 #include <gtest/gtest.h>
 
+#include "test_support.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -26,11 +28,7 @@ namespace {
 
 constexpr double pi = std::numbers::pi;
 
-void record(const std::string& key, double value) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.4e", value);
-  ::testing::Test::RecordProperty(key, buf);
-}
+using kolsky::testing::record;
 
 /// Standard normal deviates from mt19937_64 (fully specified by the standard) through
 /// Box-Muller, so the noise is the same with every standard library.

@@ -5,6 +5,8 @@
 #include "io/hdf5_run.hpp"
 
 #include <gtest/gtest.h>
+
+#include "test_support.hpp"
 #include <unistd.h>
 
 #include <cstdio>
@@ -19,28 +21,10 @@ using kolsky::io::Series;
 
 namespace {
 
-/// A fresh directory per test, removed afterwards.
-class TempDir {
- public:
-  TempDir() {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    path_ = fs::temp_directory_path() /
-            ("kolsky_test_io_" + std::string(info->name()) + "_" + std::to_string(getpid()));
-    fs::remove_all(path_);
-    fs::create_directories(path_);
-  }
-  ~TempDir() {
-    std::error_code ec;
-    fs::remove_all(path_, ec);
-  }
-  std::string file(const std::string& name) const { return (path_ / name).string(); }
-  size_t n_entries() const {
-    return static_cast<size_t>(std::distance(fs::directory_iterator(path_), fs::directory_iterator()));
-  }
-
- private:
-  fs::path path_;
+struct TempDir : kolsky::testing::TempDir {
+  TempDir() : kolsky::testing::TempDir("kolsky_test_io") {}
 };
+
 
 void write_text(const std::string& path, const std::string& text) {
   std::ofstream(path) << text;

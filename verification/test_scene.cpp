@@ -346,8 +346,10 @@ TEST_F(SceneTest, BadCsvIsRejectedNamingFileAndLine) {
   EXPECT_TRUE(contains(e.rule(), "time_s must be strictly increasing")) << e.what();
 
   const std::vector<std::tuple<std::string, std::string, std::string>> cases = {
-      {"0,0\n1,2,3\n", "line 2", "expected 2 columns"},
-      {"0,0\n1,abc\n", "line 2", "'abc' is not a finite number"},
+      {"0,0\n1,2,3\n", "line 2", "row has 3 cells but the table has 2 columns"},
+      {"0,1,2\n1,2,3\n", "line 1", "expected 2 columns"},
+      {"0,0\n1,abc\n", "line 2", "'abc' is not a number"},
+      {"0,0\n1,nan\n", "line 2", "'nan' is not a finite number"},
       {"# only\n0,0\n", "", "needs at least 2 data rows"},
       {"0.01,0\n0.1,1e8\n", "line 1", "must start at (0, 0)"},
       {"0,0\n0.1,1e8\n0.2,5e7\n", "line 3", "stress_pa must be strictly increasing"}};

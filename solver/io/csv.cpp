@@ -25,6 +25,10 @@ std::vector<std::string> split_cells(const std::string& line) {
   std::vector<std::string> cells;
   std::string cell;
   std::istringstream in(line);
+  if (line.find(',') == std::string::npos) {  // blank-separated row
+    while (in >> cell) cells.push_back(cell);
+    return cells;
+  }
   while (std::getline(in, cell, ',')) cells.push_back(trim(cell));
   if (!line.empty() && line.back() == ',') cells.emplace_back();  // getline drops a trailing empty cell
   return cells;
@@ -99,6 +103,7 @@ CsvTable read_csv(const std::string& path) {
                        col + ": '" + cells[first_bad] + "' is not a number");
     }
     for (size_t i = 0; i < values.size(); ++i) t.columns[i].push_back(values[i]);
+    t.lines.push_back(line_no);
   }
   if (in.bad()) throw InputError(path, line_ref(line_no), "read error");
   if (first_row) throw InputError(path, "", "empty file: no header or data rows");

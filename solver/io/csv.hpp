@@ -1,5 +1,6 @@
 // Numeric CSV tables: digitized reference curves (data/digitized/), pulse inputs, exported probes.
-// Format: comma separated, cells whitespace-trimmed, lines starting with '#' and blank lines
+// Format: comma separated (a row without commas may separate its cells by blanks), cells
+// whitespace-trimmed, lines starting with '#' and blank lines
 // ignored, an optional header row (detected: the first row with any non-numeric cell), every
 // other cell a number (nan/inf accepted). No quoting: names and values must not contain commas.
 #pragma once
@@ -14,6 +15,7 @@ namespace kolsky::io {
 struct CsvTable {
   std::vector<std::string> header;
   std::vector<std::vector<double>> columns;
+  std::vector<size_t> lines;  ///< 1-based file line of each data row (for error messages)
 
   /// Number of data rows (0 for a table without columns).
   size_t rows() const;

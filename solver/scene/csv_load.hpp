@@ -1,8 +1,6 @@
-// Scene-local CSV reader for the two tables a scene can reference: a tabulated pulse
-// (time_s, stress_pa) and a compaction loading curve (strain, stress_pa). Deliberately tiny
-// and independent of solver/io, which sits above scene in the layering (docs/architecture.md).
-// Format: '#' comment lines and blank lines skipped, an optional header row, fields separated
-// by commas or whitespace, exactly two numeric fields per row, SI units.
+// The two tables a scene can reference: a tabulated pulse (time_s, stress_pa) and a compaction
+// loading curve (strain, stress_pa), read with io::read_csv (format in io/csv.hpp), then held
+// to their rules: exactly two finite columns, SI units, increasing where the physics needs it.
 // Errors: InputError(csv_path, "line N", rule), or path "" for whole-file problems.
 #pragma once
 #include <string>
