@@ -14,6 +14,7 @@ struct UsageError : std::runtime_error {
 int cmd_run(const std::vector<std::string>& args);
 int cmd_analyze(const std::vector<std::string>& args);
 int cmd_defaults(const std::vector<std::string>& args);
+int cmd_eos(const std::vector<std::string>& args);
 
 /// Parsed options: positional arguments plus "-o", "--bars", "--threads" values and flags.
 struct Options {

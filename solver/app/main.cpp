@@ -22,6 +22,9 @@ const char* kUsage =
     "  kolsky analyze GAUGES.csv --bars BARS.json [-o OUT.csv] [--quiet]\n"
     "      process strain-gauge records (time, incident strain, transmitted strain) into\n"
     "      specimen strain, strain rate, front/back/average stress, alpha(t), wave energies\n"
+    "  kolsky eos --water W [--porosity n] [-o eos.csv] [--help for more options]\n"
+    "      three-phase soil EOS (Eqs. 2.1-2.9): P(eps_v) and its components P_BC, P_D, P_E;\n"
+    "      W in percent of dry mass (docs/eos.md)\n"
     "  kolsky defaults\n"
     "      every scene and BARS.json parameter with its default, unit and description\n"
     "  kolsky --help | --version\n"
@@ -47,6 +50,7 @@ int main(int argc, char** argv) {
     if (cmd == "run") return kolsky::app::cmd_run(args);
     if (cmd == "analyze") return kolsky::app::cmd_analyze(args);
     if (cmd == "defaults") return kolsky::app::cmd_defaults(args);
+    if (cmd == "eos") return kolsky::app::cmd_eos(args);
     std::fprintf(stderr, "kolsky: unknown command '%s' (run, analyze, defaults; see --help)\n",
                  cmd.c_str());
     return 1;
@@ -56,6 +60,9 @@ int main(int argc, char** argv) {
   } catch (const kolsky::InputError& e) {
     std::fprintf(stderr, "kolsky: error: %s\n", e.what());
     return kolsky::kExitInputError;
+  } catch (const kolsky::NumericalError& e) {
+    std::fprintf(stderr, "kolsky: numerical failure: %s\n", e.what());
+    return kolsky::kExitNumericalError;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "kolsky: internal error: %s\n", e.what());
     return 1;

@@ -67,6 +67,12 @@ analyze)
   printf 't,a,b\n0,1,2\n1,2\n' > ragged.csv
   expect_exit 2 "$kolsky" analyze ragged.csv --bars "$ex/bars_song2009.json"
   grep -q "ragged.csv: line 3" err.txt || fail "ragged CSV message: $(cat err.txt)" ;;
+eos)
+  expect_exit 0 "$kolsky" eos --water 3 -o e.csv
+  grep -q "^eps_v,p_pa,p_bc_pa,p_d_pa,p_e_pa" e.csv || fail "eos CSV header"
+  grep -q "abs_tol" e.csv || fail "ODE tolerances not recorded"
+  expect_exit 2 "$kolsky" eos --water 30; grep -q "\-\-water" err.txt || fail "water range message"
+  no_temp_files ;;
 *) fail "unknown case" ;;
 esac
 echo "PASS [$case_name]"
