@@ -56,8 +56,10 @@ void BM_CoupledSong(benchmark::State& st) {
   s.incident.gauges = {2.05};
   s.transmission.gauges = {0.5};
   s.pulse = kPulse;
-  s.specimen.n_elements = 20;
-  s.specimen.density = 1457.5;
+  bar::ColumnParams column;
+  column.n_elements = 20;
+  column.density = 1457.5;
+  s.specimen = column;
   s.time.end_time = 1.5e-3;
   s.output.interval = 1e-6;
   for (auto _ : st) {

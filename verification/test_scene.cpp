@@ -94,6 +94,8 @@ class SceneTest : public ::testing::Test {
     if (selector == "specimen.model" && value == "compaction")
       j["specimen"] = {
           {"model", "compaction"}, {"loading_curve", "curve.csv"}, {"unloading_modulus", 1e9}};
+    if (selector == "specimen.model" && value == "fe")  // K_u >= the curve's steepest slope
+      j["specimen"] = {{"model", "fe"}, {"loading_curve", "curve.csv"}, {"unloading_modulus", 2e9}};
     return j;
   }
   fs::path dir_;
@@ -152,7 +154,7 @@ TEST_F(SceneTest, EveryParameterIsAccepted) {
                                                {"specimen.model", "elastic"},
                                                {"specimen.constrained_modulus", 230e6},
                                                {"specimen.loading_curve", "curve.csv"},
-                                               {"specimen.unloading_modulus", 1e9},
+                                               {"specimen.unloading_modulus", 2e9},
                                                {"time.end", 1e-3},
                                                {"incident.gauge_distance", 0.5},
                                                {"transmission.gauge_distance", 0.5},
@@ -305,8 +307,8 @@ TEST_F(SceneTest, DefaultsAreFilledInResolved) {
   EXPECT_EQ(r["time"]["check_stability"], true);
   EXPECT_EQ(r["output"]["interval"], 0.0);
   EXPECT_EQ(s.spec.incident.gauges, std::vector<double>({0.5}));
-  EXPECT_EQ(s.spec.specimen.n_elements, 100);
-  EXPECT_EQ(std::get<kolsky::bar::LinearElastic>(s.spec.specimen.material).constrained_modulus,
+  EXPECT_EQ(std::get<kolsky::bar::ColumnParams>(s.spec.specimen).n_elements, 100);
+  EXPECT_EQ(std::get<kolsky::bar::LinearElastic>(std::get<kolsky::bar::ColumnParams>(s.spec.specimen).material).constrained_modulus,
             230e6);
   EXPECT_EQ(std::get<kolsky::bar::TrapezoidPulse>(s.spec.pulse).fall_time, 50e-6);
   EXPECT_EQ(parse(r).resolved, r);  // the resolved scene is itself a valid, fixed-point scene
@@ -327,7 +329,7 @@ TEST_F(SceneTest, CsvPathsResolveAgainstTheSceneFolder) {
   EXPECT_EQ(pulse.scale, 0.5);
   const std::string abs = (dir_ / "case/data/pulse.csv").lexically_normal().string();
   EXPECT_EQ(s.resolved["pulse"]["file"], abs);
-  const auto& curve = std::get<kolsky::bar::TabulatedCompaction>(s.spec.specimen.material);
+  const auto& curve = std::get<kolsky::bar::TabulatedCompaction>(std::get<kolsky::bar::ColumnParams>(s.spec.specimen).material);
   EXPECT_EQ(curve.loading.y.back(), 1e8);
   j["pulse"]["file"] = "missing.csv";
   const InputError e = scene_error(j);

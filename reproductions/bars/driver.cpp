@@ -87,9 +87,10 @@ int main(int argc, char** argv) {
 
   const long hold = std::max(1L, static_cast<long>(std::lround(2e-6 / (h.t[1] - h.t[0]))));
   const long i_eq = shpb::first_equilibrium_index(h.alpha, 0.05, hold);
-  const double c_s = std::sqrt(std::get<bar::LinearElastic>(sc.spec.specimen.material).constrained_modulus /
-                               sc.spec.specimen.density);
-  const double transit = sc.spec.specimen.length / c_s;
+  const auto& column = std::get<bar::ColumnParams>(sc.spec.specimen);
+  const double c_s = std::sqrt(std::get<bar::LinearElastic>(column.material).constrained_modulus /
+                               column.density);
+  const double transit = column.length / c_s;
   if (i_eq >= 0) {
     m.scalar("song.equilibrium_transits", h.t[i_eq] / transit);
     m.note("song.equilibrium_transits", "alpha < 0.05 (held 2 us) from t = " +
@@ -142,7 +143,7 @@ int main(int argc, char** argv) {
   rep.plots = {waves_plot, rate_plot, ss_plot, alpha_plot};
   rep.preamble_markdown =
       "Scene: `reproductions/bars/scene_" + args.scale + ".json` (characteristic bars, " +
-      std::to_string(sc.spec.specimen.n_elements) + " specimen elements, dt = " +
+      std::to_string(column.n_elements) + " specimen elements, dt = " +
       std::to_string(run.dt * 1e9) + " ns). The incident pulse is reconstructed " +
       "(`data/digitized/bars/song2009_incident_480_reconstructed.meta.json`): the dissertation's " +
       "Fig. 2.5/4.1 are not available. The specimen is a 1-D elastic stand-in (D = 230 MPa), so " +

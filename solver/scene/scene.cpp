@@ -8,6 +8,7 @@
 #include <filesystem>
 
 #include "bar/material.hpp"
+#include "core/errors.hpp"
 #include "scene/csv_load.hpp"
 #include "scene/json_reader.hpp"
 
@@ -110,8 +111,54 @@ bar::Pulse read_pulse(JsonReader& r, const std::string& base_dir) {
   return tab;
 }
 
-bar::ColumnParams read_specimen(JsonReader& r, const std::string& base_dir) {
+fe::FeSpecimenParams read_fe_specimen(JsonReader& r, const std::string& base_dir) {
+  fe::FeSpecimenParams f;
+  f.length = r.number("specimen.length");
+  f.radius = 0.5 * r.number("specimen.diameter");
+  f.n_r = r.integer("specimen.n_radial");
+  f.n_z = r.integer("specimen.n_axial");
+  fe::PseudoTensorModeI m;
+  m.density = r.number("specimen.density");
+  m.shear_modulus = r.number("specimen.shear_modulus");
+  m.friction_angle_deg = r.number("specimen.friction_angle");
+  m.cohesion = r.number("specimen.cohesion");
+  m.eos.loading = load_loading_curve(resolve_csv(r, "specimen.loading_curve", base_dir));
+  m.eos.unloading_bulk_modulus = r.number("specimen.unloading_modulus");
+  try {  // the EOS rules (e.g. unloading modulus >= every loading slope) at parse time
+    m.validate("specimen");
+  } catch (const kolsky::InputError& e) {
+    const bool unloading = e.path().find("unloading") != std::string::npos;
+    r.fail(unloading ? "specimen.unloading_modulus" : "specimen.loading_curve", e.rule());
+  }
+  f.material = m;
+  const fe::LinearElastic tube{r.number("specimen.tube_youngs_modulus"),
+                               r.number("specimen.tube_poisson_ratio"),
+                               r.number("specimen.tube_density")};
+  const std::string tube_kind = r.text("specimen.tube");
+  const double thickness = r.number("specimen.tube_thickness");
+  const double tube_length = r.number("specimen.tube_length");
+  if (tube_kind == "none") f.tube = fe::NoTube{};
+  else if (tube_kind == "rigid") f.tube = fe::RigidTube{};
+  else if (tube_kind == "spring") f.tube = fe::SpringTube{tube, thickness};
+  else {
+    if (tube_length < f.length)
+      r.fail("specimen.tube_length", "the meshed tube must be at least as long as the specimen");
+    fe::MeshedTube t;
+    t.material = tube;
+    t.thickness = thickness;
+    t.length = tube_length;
+    f.tube = t;
+  }
+  f.friction_faces = r.number("specimen.friction_faces");
+  f.friction_tube = r.number("specimen.friction_tube");
+  f.penalty_scale = r.number("specimen.penalty_scale");
+  f.contact_damping = r.number("specimen.contact_damping");
+  return f;
+}
+
+shpb::SpecimenSpec read_specimen(JsonReader& r, const std::string& base_dir) {
   const std::string model = r.text("specimen.model");
+  if (model == "fe") return read_fe_specimen(r, base_dir);
   bar::ColumnParams c;
   c.length = r.number("specimen.length");
   c.diameter = r.number("specimen.diameter");
@@ -155,9 +202,9 @@ Scene parse_scene(const nlohmann::json& j, const std::string& file, const std::s
   // Beyond 4 bar diameters the 1-D bar/specimen coupling (uniform face stress) is meaningless
   // and such a value is almost always a unit slip (mm typed as m).
   const double bar_d = std::min(e.incident.geometry.diameter, e.transmission.geometry.diameter);
-  if (e.specimen.diameter > 4.0 * bar_d)
+  if (shpb::specimen_diameter(e.specimen) > 4.0 * bar_d)
     r.fail("specimen.diameter", "inconsistent geometry: specimen diameter " +
-                                    show(e.specimen.diameter) +
+                                    show(shpb::specimen_diameter(e.specimen)) +
                                     " m exceeds 4 x the bar diameter (" + show(bar_d) + " m)");
   e.time = read_time(r);
   e.output.interval = r.number("output.interval");

@@ -12,6 +12,7 @@
 #include "bar/material.hpp"
 #include "bar/pulse.hpp"
 #include "bar/specimen_column.hpp"
+#include "fe/fe_specimen.hpp"
 #include "shpb/analysis.hpp"
 #include "shpb/experiment.hpp"
 #include "shpb/gauge_processing.hpp"
@@ -30,6 +31,8 @@ const Range kHalfOpenUnitUpper{0.0, 1.0, true, false};  // (0, 1]
 const Range kHalfOpenUnitLower{0.0, 1.0, false, true};  // [0, 1)
 // Below 2 elements the column has no interior node; above 1e5 a 1-D column is only slow.
 const Range kElementCount{2.0, 100000.0, false, false};
+const Range kMeshCount{1.0, 1000.0, false, false};
+const Range kFrictionAngle{0.0, 90.0, false, true};  // [0, 90) degrees
 // Below 4 balls a chain is no longer a wave guide: incident and reflected waves overlap at
 // every ball, so there is nothing for a gauge to separate.
 const Range kSphereCount{4.0, kInf, false, false, true};
@@ -159,21 +162,57 @@ std::vector<ParamSpec> build_table() {
 
   const bar::ColumnParams col;
   s.add(VT::choice, "specimen.model", kRequired, "-", kNoRange,
-        "Specimen material law: elastic or compaction", "", {"elastic", "compaction"});
+        "Specimen model: 1-D column (elastic or compaction) or axisymmetric FE (fe, Sec. 2.3)",
+        "", {"elastic", "compaction", "fe"});
   s.add(VT::number, "specimen.length", col.length, "m", kPositive, "Specimen length L_s");
   s.add(VT::number, "specimen.diameter", col.diameter, "m", kPositive,
         "Specimen diameter, at most 4 x the bar diameter");
   s.add(VT::number, "specimen.density", col.density, "kg/m^3", kPositive, "Specimen density");
   s.add(VT::integer, "specimen.n_elements", col.n_elements, "-", kElementCount,
-        "Two-node elements along the specimen");
+        "Two-node elements along the specimen", "specimen.model=elastic|compaction");
   s.add(VT::number, "specimen.constrained_modulus", kRequired, "Pa", kPositive,
         "Constrained (uniaxial-strain) modulus D", "specimen.model=elastic");
   s.add(VT::path, "specimen.loading_curve", kRequired, "path", kNoRange,
-        "CSV table strain,stress_pa from (0, 0), both columns strictly increasing",
-        "specimen.model=compaction");
+        "CSV table strain,stress_pa from (0, 0), both columns strictly increasing (fe: "
+        "volumetric strain -> pressure, the compaction EOS)",
+        "specimen.model=compaction|fe");
   s.add(VT::number, "specimen.unloading_modulus", kRequired, "Pa", kPositive,
-        "Slope of unloading/reloading from the largest strain reached",
-        "specimen.model=compaction");
+        "Slope of unloading/reloading from the largest strain reached (fe: bulk modulus)",
+        "specimen.model=compaction|fe");
+  const fe::FeSpecimenParams fep;
+  const fe::PseudoTensorModeI pt;
+  const fe::MeshedTube mt;
+  s.add(VT::integer, "specimen.n_radial", fep.n_r, "-", kMeshCount,
+        "Radial elements of the specimen mesh", "specimen.model=fe");
+  s.add(VT::integer, "specimen.n_axial", fep.n_z, "-", kMeshCount,
+        "Axial elements of the specimen mesh", "specimen.model=fe");
+  s.add(VT::number, "specimen.shear_modulus", pt.shear_modulus, "Pa", kPositive,
+        "Shear modulus G of the pseudo-tensor model (Sec. 2.3.2)", "specimen.model=fe");
+  s.add(VT::number, "specimen.friction_angle", pt.friction_angle_deg, "deg", kFrictionAngle,
+        "Mohr-Coulomb friction angle, Mode I (Sec. 2.3.2)", "specimen.model=fe");
+  s.add(VT::number, "specimen.cohesion", pt.cohesion, "Pa", kNonNegative,
+        "Mohr-Coulomb cohesion (Sec. 2.3.2: zero)", "specimen.model=fe");
+  s.add(VT::choice, "specimen.tube", "rigid", "-", kNoRange,
+        "Confining tube: none, rigid, spring (massless Lame wall) or meshed",
+        "specimen.model=fe", {"none", "rigid", "spring", "meshed"});
+  s.add(VT::number, "specimen.tube_youngs_modulus", mt.material.youngs_modulus, "Pa", kPositive,
+        "Tube E (steel 200e9, polycarbonate 1.4e9; Sec. 2.3.1)", "specimen.model=fe");
+  s.add(VT::number, "specimen.tube_poisson_ratio", mt.material.poisson_ratio, "-", kPoisson,
+        "Tube Poisson ratio (steel 0.33, polycarbonate 0.3)", "specimen.model=fe");
+  s.add(VT::number, "specimen.tube_density", mt.material.density, "kg/m^3", kPositive,
+        "Tube density (steel 8100, polycarbonate 1500)", "specimen.model=fe");
+  s.add(VT::number, "specimen.tube_thickness", mt.thickness, "m", kPositive,
+        "Tube wall thickness (not given in the text: a choice)", "specimen.model=fe");
+  s.add(VT::number, "specimen.tube_length", mt.length, "m", kPositive,
+        "Meshed tube length, at least the specimen length", "specimen.model=fe");
+  s.add(VT::number, "specimen.friction_faces", fep.friction_faces, "-", kNonNegative,
+        "Coulomb friction at both bar faces (Sec. 2.4.2: 0 or 0.2)", "specimen.model=fe");
+  s.add(VT::number, "specimen.friction_tube", fep.friction_tube, "-", kNonNegative,
+        "Coulomb friction at the tube wall", "specimen.model=fe");
+  s.add(VT::number, "specimen.penalty_scale", fep.penalty_scale, "-", kPositive,
+        "Contact penalty stiffness factor (docs/fe.md)", "specimen.model=fe");
+  s.add(VT::number, "specimen.contact_damping", fep.contact_damping, "-", kNonNegative,
+        "Normal contact damping, fraction of critical (docs/fe.md)", "specimen.model=fe");
 
   const shpb::TimeSpec time;
   s.add(VT::number, "time.end", kRequired, "s", kPositive, "Simulated time");

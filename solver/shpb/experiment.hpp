@@ -8,6 +8,7 @@
 #include "bar/material.hpp"
 #include "bar/pulse.hpp"
 #include "bar/specimen_column.hpp"
+#include "fe/fe_specimen.hpp"
 
 namespace kolsky::shpb {
 
@@ -32,12 +33,17 @@ struct OutputSpec {
   double interval = 0.0;  ///< probe sampling interval, s; 0 = every 1 us rounded to steps
 };
 
+/// The specimen between the bars: a 1-D column (bar/) or an axisymmetric FE mesh (fe/).
+using SpecimenSpec = std::variant<bar::ColumnParams, fe::FeSpecimenParams>;
+double specimen_length(const SpecimenSpec& s);    ///< L_s, m
+double specimen_diameter(const SpecimenSpec& s);  ///< m
+
 struct ExperimentSpec {
   std::string title;
   BarKind bar_kind = BarKind::characteristic;
   BarSpec incident, transmission;
   bar::Pulse pulse = bar::TrapezoidPulse{};
-  bar::ColumnParams specimen;
+  SpecimenSpec specimen = bar::ColumnParams{};
   TimeSpec time;
   OutputSpec output;
 };

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <type_traits>
 
 namespace kolsky::shpb {
 
@@ -17,8 +18,22 @@ Bar make_bar(BarKind kind, const BarSpec& b, std::optional<bar::Pulse> load, dou
   return bar::CharacteristicBar(b.material, b.geometry, std::move(load), face_mass);
 }
 
-double stable_dt_of(const Bar& b) {
-  return std::visit([](const auto& x) { return x.stable_dt(); }, b);
+Specimen make_specimen(const SpecimenSpec& s) {
+  return std::visit([](const auto& p) -> Specimen {
+    if constexpr (std::is_same_v<std::decay_t<decltype(p)>, bar::ColumnParams>)
+      return bar::SpecimenColumn(p);
+    else
+      return fe::FeSpecimen(p);
+  }, s);
+}
+
+template <class V>
+double stable_dt_of(const V& v) {
+  return std::visit([](const auto& x) { return x.stable_dt(); }, v);
+}
+
+double face_mass_of(const Specimen& s) {
+  return std::visit([](const auto& x) { return x.face_mass(); }, s);
 }
 
 time_loop::StepPolicy policy(const TimeSpec& t, const OutputSpec& o) {
@@ -26,6 +41,18 @@ time_loop::StepPolicy policy(const TimeSpec& t, const OutputSpec& o) {
 }
 
 }  // namespace
+
+double specimen_length(const SpecimenSpec& s) {
+  return std::visit([](const auto& p) { return p.length; }, s);
+}
+
+double specimen_diameter(const SpecimenSpec& s) {
+  struct {
+    double operator()(const bar::ColumnParams& c) const { return c.diameter; }
+    double operator()(const fe::FeSpecimenParams& f) const { return 2.0 * f.radius; }
+  } v;
+  return std::visit(v, s);
+}
 
 const Probe& RunResult::probe(const std::string& name) const {
   for (const auto& p : probes)
@@ -50,10 +77,10 @@ FaceWaves RunResult::face_waves(double incident_modulus, double transmission_mod
 
 SimulatedShpb::SimulatedShpb(const ExperimentSpec& spec)
     : spec_(spec),
-      specimen_(spec.specimen),
-      incident_(make_bar(spec.bar_kind, spec.incident, spec.pulse, specimen_.face_mass())),
-      transmission_(make_bar(spec.bar_kind, spec.transmission, std::nullopt, specimen_.face_mass())) {
-  const double stable = std::min({specimen_.stable_dt(), stable_dt_of(incident_),
+      specimen_(make_specimen(spec.specimen)),
+      incident_(make_bar(spec.bar_kind, spec.incident, spec.pulse, face_mass_of(specimen_))),
+      transmission_(make_bar(spec.bar_kind, spec.transmission, std::nullopt, face_mass_of(specimen_))) {
+  const double stable = std::min({stable_dt_of(specimen_), stable_dt_of(incident_),
                                   stable_dt_of(transmission_)});
   schedule_ = time_loop::plan_steps(policy(spec.time, spec.output), stable);
 }
@@ -81,8 +108,8 @@ AnalysisSetup SimulatedShpb::analysis_setup() const {
   AnalysisSetup s;
   s.incident = as_analysis_bar(spec_.incident);
   s.transmission = as_analysis_bar(spec_.transmission);
-  s.specimen_length = spec_.specimen.length;
-  s.specimen_diameter = spec_.specimen.diameter;
+  s.specimen_length = specimen_length(spec_.specimen);
+  s.specimen_diameter = specimen_diameter(spec_.specimen);
   return s;
 }
 
@@ -91,8 +118,10 @@ void SimulatedShpb::step(double t, double dt) {
   auto rate = [](const Bar& b) { return std::visit([](const auto& x) { return x.rate(); }, b); };
   bar::FaceState faces{intrusion(incident_), intrusion(transmission_), rate(incident_),
                        rate(transmission_)};
-  forces_ = specimen_.forces(faces);
-  specimen_.advance(dt);
+  std::visit([&](auto& sp) {
+    forces_ = sp.forces(faces);
+    sp.advance(dt);
+  }, specimen_);
   std::visit([&](auto& b) { b.step(t, dt, forces_.front); }, incident_);
   std::visit([&](auto& b) { b.step(t, dt, forces_.back); }, transmission_);
 
@@ -116,13 +145,15 @@ void SimulatedShpb::step(double t, double dt) {
 void SimulatedShpb::sample(double t, RunResult& r) {
   const auto& mi = spec_.incident.material;
   const auto& mt = spec_.transmission.material;
-  const double area_s = specimen_.area();
+  const double area_s = std::visit([](const auto& sp) { return sp.area(); }, specimen_);
   auto face_ke = [](const Bar& b) { return std::visit([](const auto& x) { return x.face_kinetic_energy(); }, b); };
   auto delivered = [](const Bar& b) { return std::visit([](const auto& x) { return x.delivered_energy(); }, b); };
-  const double held = specimen_.energy().total() + face_ke(incident_) + face_ke(transmission_);
+  const double held = std::visit([](const auto& sp) { return sp.energy().total(); }, specimen_) +
+                      face_ke(incident_) + face_ke(transmission_);
   const double in = delivered(incident_) + delivered(transmission_);
 
-  bool ok = specimen_.finite() && std::isfinite(held) && std::isfinite(in);
+  bool ok = std::visit([](const auto& sp) { return sp.finite(); }, specimen_) &&
+            std::isfinite(held) && std::isfinite(in);
   ok = ok && std::visit([](const auto& b) { return b.finite(); }, incident_) &&
        std::visit([](const auto& b) { return b.finite(); }, transmission_);
   if (!ok) throw NumericalError("non-finite state at t = " + std::to_string(t) + " s", t);
@@ -138,7 +169,7 @@ void SimulatedShpb::sample(double t, RunResult& r) {
   v.push_back(std::visit([](const auto& b) { return b.outgoing_at_step(); }, transmission_));
   v.push_back(forces_.front / area_s);
   v.push_back(forces_.back / area_s);
-  v.push_back(specimen_.mean_strain());
+  v.push_back(std::visit([](const auto& sp) { return sp.mean_strain(); }, specimen_));
   v.push_back(std::visit([](const auto& b) { return b.rate_at_step(); }, incident_));
   v.push_back(std::visit([](const auto& b) { return b.rate_at_step(); }, transmission_));
   v.push_back(w_i_);

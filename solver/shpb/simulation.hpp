@@ -39,6 +39,7 @@ struct RunResult {
 };
 
 using Bar = std::variant<bar::CharacteristicBar, bar::SphereChainBar>;
+using Specimen = std::variant<bar::SpecimenColumn, fe::FeSpecimen>;
 
 class SimulatedShpb {
  public:
@@ -49,7 +50,7 @@ class SimulatedShpb {
   /// Incident-wave arrival time at the specimen face, L_I / c_I (s).
   double arrival_time() const;
   AnalysisSetup analysis_setup() const;
-  const bar::SpecimenColumn& specimen() const { return specimen_; }
+  const Specimen& specimen() const { return specimen_; }
   const Bar& incident_bar() const { return incident_; }
   const Bar& transmission_bar() const { return transmission_; }
 
@@ -57,7 +58,7 @@ class SimulatedShpb {
   void step(double t, double dt);
   void sample(double t, RunResult& r);
   ExperimentSpec spec_;
-  bar::SpecimenColumn specimen_;
+  Specimen specimen_;
   Bar incident_, transmission_;
   time_loop::Schedule schedule_;
   bar::FaceForces forces_;

@@ -22,7 +22,7 @@ constexpr double kModulus = 230e6;
 shpb::ExperimentSpec ramped_elastic() {
   auto spec = song_spec(bar::LinearElastic{kModulus});
   spec.pulse = bar::TrapezoidPulse{100e6, 150e-6, 500e-6, 100e-6, 0.0};
-  spec.specimen.n_elements = 100;
+  column(spec).n_elements = 100;
   spec.output.interval = 0.25e-6;
   return spec;
 }
@@ -52,7 +52,7 @@ std::vector<CheckResult> modulus_recovery() {
   const long i_eq = shpb::first_equilibrium_index(h.alpha, 0.05, hold);
   // Fit while the incident stress is still flat-topped: arrival + 400 us.
   const long end = std::upper_bound(h.t.begin(), h.t.end(), 400e-6) - h.t.begin();
-  const double transit = spec.specimen.length / std::sqrt(kModulus / spec.specimen.density);
+  const double transit = column(spec).length / std::sqrt(kModulus / column(spec).density);
   CheckResult c;
   c.id = "analysis.elastic_modulus_recovery";
   c.description = "elastic specimen, 150 us ramp: slope of Eq. 1.2 stress vs Eq. 1.1 strain once alpha < 0.05";

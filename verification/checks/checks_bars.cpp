@@ -145,9 +145,9 @@ std::vector<CheckResult> impedance_change() {
   const double z1 = bar::BarMaterial{}.specific_impedance();
   const double c2 = 2000.0, rho2 = z1 / 3.0 / c2;
   auto spec = song_spec(bar::LinearElastic{rho2 * c2 * c2});
-  spec.specimen.length = 0.5;
-  spec.specimen.density = rho2;
-  spec.specimen.n_elements = 2000;
+  column(spec).length = 0.5;
+  column(spec).density = rho2;
+  column(spec).n_elements = 2000;
   spec.pulse = bar::HalfSinePulse{100e6, 50e-6, 0.0};
   spec.time.end_time = spec.incident.geometry.length / 4969.0 + 0.5 / c2 + 0.2e-3;
   shpb::SimulatedShpb sim(spec);

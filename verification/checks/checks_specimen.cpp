@@ -69,8 +69,8 @@ CheckResult compaction_loop_area() {
   auto spec = song_spec(law);
   shpb::SimulatedShpb sim(spec);
   const auto r = sim.run();
-  const auto& col = sim.specimen();
-  const double volume = col.area() * spec.specimen.length / spec.specimen.n_elements;
+  const auto& col = std::get<bar::SpecimenColumn>(sim.specimen());
+  const double volume = col.area() * column(spec).length / column(spec).n_elements;
   double expected = 0;
   for (size_t e = 0; e < col.element_strain().size(); ++e) {
     const double emax = col.element_max_strain()[e];
@@ -118,7 +118,7 @@ CheckResult convergence_order() {
   auto history = [](int n) {
     auto spec = song_spec(bar::LinearElastic{230e6});
     spec.pulse = smooth_pulse();
-    spec.specimen.n_elements = n;
+    column(spec).n_elements = n;
     spec.time.end_time = 1.2e-3;
     spec.output.interval = 1e-6;
     // dt proportional to h (fixed Courant number), and a whole number of steps per sample.
