@@ -234,7 +234,7 @@ std::set<std::pair<int, int>> brute_pairs(const Particles& p, double skin) {
 }
 
 TEST(TestDemNeighbours, PairListMatchesBruteForceAndCarriesHistory) {
-  Particles p = random_packing(1500, 1e-4, 4e-4, {{0, 0, 0}, {8e-3, 8e-3, 8e-3}}, 42, 0, kSand);
+  Particles p = random_packing(2500, 1e-4, 4e-4, {{0, 0, 0}, {9e-3, 9e-3, 9e-3}}, 42, 0, kSand);
   const double skin = 5e-5;
   const PairList a = build_pair_list(p.x, p.radius, skin, {});
   const auto ref = brute_pairs(p, skin);

@@ -125,7 +125,7 @@ std::size_t brute_force_contacts(const Particles& p) {
   return n;
 }
 
-// About 3000 grains in a confining tube between two planes, all physics on (friction, damping,
+// 3281 grains in a confining tube between two planes, all physics on (friction, damping,
 // rolling retardation, compliant tube, a moving plane): a slightly overlapping lattice with
 // random velocities, big enough that every loop runs in parallel (DemSystem runs loops under
 // 2048 items on one thread).
