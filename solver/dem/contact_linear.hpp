@@ -1,0 +1,110 @@
+// Linear contact laws, composed of the pieces of contact_pieces.hpp:
+//   LinearSpring ("linear_spring"): PFC-style constant k_n, k_s, friction (walls, Table 4.1).
+//   LsDynaLinear ("ls_dyna_linear"): LS-DYNA DES contact, Sec. 3.3, Eqs. 3.1-3.4:
+//     K_n = NORMK k_1 r_1 k_2 r_2 / (k_1 r_1 + k_2 r_2), k_i = E_i / (1 - 2 nu_i) as printed,
+//     K_s = SHEARK K_n, Coulomb FRIC, rolling moment FRICR R* F_n, NDAMP/TDAMP as fractions of
+//     critical damping. Stable step sqrt(m/k) (sqrt(1 + z^2) - z), with 3.5 k_s for the
+//     tangential spring (a solid sphere's contact point responds with mass m/3.5).
+#pragma once
+#include <string>
+#include <vector>
+
+#include "dem/contact_pieces.hpp"
+#include "dem/particles.hpp"
+
+namespace kolsky::dem {
+
+/// The shared evaluation of a linear spring-dashpot-slider (+ rolling friction) contact.
+[[gnu::always_inline]] inline ContactResult linear_contact_force(const LinearNormal& normal,
+                                          const LinearTangential& tangential,
+                                          const CriticalDamping& damping_normal,
+                                          const CriticalDamping& damping_tangential,
+                                          const RollingFriction& rolling,
+                                          const ContactGeometry& g, Vec3& history, double dt) {
+  ContactResult r;
+  const NormalElastic el = normal.force(g);
+  const double fn =
+      normal_force(g, el, damping_normal.coefficient(el.stiffness, g.m_eff), dt, r);
+  const double kt = tangential.stiffness_at(el);
+  const Vec3 ft = tangential_force(g, history, dt, kt,
+                                   damping_tangential.coefficient(kt, g.m_eff),
+                                   tangential.friction, el.force, r);
+  r.normal_force = fn;
+  r.force = ft - fn * g.normal;
+  r.rolling_torque = rolling.torque(g, fn);
+  if (rolling.coefficient != 0) r.dissipated -= dot(r.rolling_torque, g.omega_rel) * dt;
+  return r;
+}
+
+/// Stable step of a single linear contact of stiffness k (N/m) and damping ratio zeta on a
+/// particle of mass m (kg): sqrt(m/k) (sqrt(1 + zeta^2) - zeta).
+double linear_contact_time_step(double mass, double stiffness, double zeta);
+
+/// PFC-style linear contact; the same parameters for every material pair (and every wall).
+struct LinearSpring {
+  LinearNormal normal;
+  LinearTangential tangential;
+  CriticalDamping damping_normal, damping_tangential;
+  RollingFriction rolling;
+
+  const LinearSpring& pair(int, int) const { return *this; }
+  const LinearSpring& pair(int) const { return *this; }
+  ContactResult force(const ContactGeometry& g, Vec3& history, double dt) const {
+    return linear_contact_force(normal, tangential, damping_normal, damping_tangential, rolling,
+                                g, history, dt);
+  }
+  /// Smallest stable step over the normal and tangential springs for particle mass m (kg).
+  double stable_dt(double mass) const;
+};
+
+/// A LinearSpring from k_n, k_s (N/m), friction and damping ratios (fractions of critical).
+LinearSpring linear_spring(double k_n, double k_s, double friction, double damping_normal = 0,
+                           double damping_tangential = 0);
+/// Throws kolsky::InputError (path.<field>) unless k_n > 0, k_s >= 0, friction >= 0, damping
+/// ratios in [0, 1) and rolling coefficient >= 0.
+void validate(const LinearSpring& s, const std::string& path);
+
+/// Table 3.2 parameters of the LS-DYNA DES contact (defaults as printed there).
+struct LsDynaParams {
+  double normk = 0.07;  ///< NORMK, scale of the normal stiffness, -
+  double sheark = 1.0;  ///< SHEARK = K_s / K_n, -
+  double fric = 0.56;   ///< Coulomb coefficient FRIC, -
+  double fricr = 0.1;   ///< rolling-friction coefficient FRICR (moment FRICR R* F_n), -
+  double ndamp = 0.1;   ///< normal damping, fraction of critical, -
+  double tdamp = 0.1;   ///< tangential damping, fraction of critical, -
+};
+
+/// One material pair of the LS-DYNA law: K_n depends on the two radii (Eq. 3.1).
+struct LsDynaPair {
+  double k_a = 0, k_b = 0;  ///< E_i / (1 - 2 nu_i), Pa
+  LsDynaParams p;
+
+  /// Eq. 3.1: NORMK k_a r_i k_b r_j / (k_a r_i + k_b r_j), N/m.
+  double normal_stiffness(double r_i, double r_j) const {
+    const double a = k_a * r_i, b = k_b * r_j;
+    return p.normk * a * b / (a + b);
+  }
+  ContactResult force(const ContactGeometry& g, Vec3& history, double dt) const {
+    const double kn = normal_stiffness(g.r_i, g.r_j);
+    return linear_contact_force(LinearNormal{kn}, LinearTangential{p.sheark * kn, p.fric},
+                                CriticalDamping{p.ndamp}, CriticalDamping{p.tdamp},
+                                RollingFriction{p.fricr}, g, history, dt);
+  }
+};
+
+/// Grain-grain LS-DYNA DES law over the material table.
+class LsDynaLinear {
+ public:
+  /// Throws kolsky::InputError on NORMK <= 0 or a negative coefficient, NDAMP/TDAMP >= 1.
+  LsDynaLinear(const std::vector<Material>& materials, const LsDynaParams& p);
+  const LsDynaPair& pair(int a, int b) const { return table_[a * n_ + b]; }
+  int n_materials() const { return n_; }
+  /// Smallest stable step for particles of mass >= m_min (kg) and radius <= r_max (m).
+  double stable_dt(double m_min, double r_max) const;
+
+ private:
+  int n_;
+  std::vector<LsDynaPair> table_;
+};
+
+}  // namespace kolsky::dem

@@ -1,0 +1,70 @@
+// DemSpecimen: the bar-coupling adapter around DemSystem (see dem_specimen.hpp).
+#include "dem/dem_specimen.hpp"
+
+#include <cmath>
+#include <numbers>
+#include <string>
+
+#include "core/errors.hpp"
+
+namespace kolsky::dem {
+
+namespace {
+Particles checked(Particles p, const SpecimenWalls& w) {
+  if (!(w.length > 0)) throw InputError("", "dem.specimen.length", "must be > 0");
+  if (!(w.radius > 0)) throw InputError("", "dem.specimen.radius", "must be > 0");
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    const Vec3& x = p.x[i];
+    if (!(x.z > 0 && x.z < w.length && std::hypot(x.x, x.y) < w.radius))
+      throw InputError("", "dem.particles[" + std::to_string(i) + "]",
+                       "centre outside the specimen (0 < z < L, sqrt(x^2 + y^2) < R)");
+  }
+  return p;
+}
+}  // namespace
+
+DemSpecimen::DemSpecimen(Particles particles, std::vector<Material> materials, ContactLaw law,
+                         const SpecimenWalls& walls, DemOptions options)
+    : walls_(walls),
+      sys_(checked(std::move(particles), walls), std::move(materials), std::move(law), options) {
+  front_ = sys_.add_plane(PlaneWall{{0, 0, 0}, {0, 0, 1}, DrivenPlane{}, walls.end_law});
+  back_ = sys_.add_plane(PlaneWall{{0, 0, walls.length}, {0, 0, -1}, DrivenPlane{}, walls.end_law});
+  CylinderWall tube;
+  tube.radius = walls.radius;
+  tube.compliance = walls.tube_compliance;
+  tube.law = walls.tube_law;
+  sys_.add_cylinder(tube);
+  sys_.compute_forces();
+  elastic_0_ = sys_.energy().elastic;
+}
+
+double DemSpecimen::area() const { return std::numbers::pi * walls_.radius * walls_.radius; }
+
+FaceForces DemSpecimen::forces(const FaceState& faces) {
+  faces_ = faces;
+  sys_.drive_plane(front_, faces.intrusion_front, faces.rate_front);
+  sys_.drive_plane(back_, faces.intrusion_back, faces.rate_back);
+  if (stepping_) {
+    sys_.finish_step();
+    stepping_ = false;
+  } else {
+    sys_.compute_forces();
+  }
+  return {sys_.plane_force(front_), sys_.plane_force(back_)};
+}
+
+void DemSpecimen::advance(double dt) {
+  sys_.begin_step(dt);
+  stepping_ = true;
+}
+
+SpecimenEnergy DemSpecimen::energy() const {
+  const DemEnergy e = sys_.energy();
+  return {e.kinetic, e.elastic - elastic_0_ + e.dissipated};
+}
+
+double DemSpecimen::mean_strain() const {
+  return (faces_.intrusion_front + faces_.intrusion_back) / walls_.length;
+}
+
+}  // namespace kolsky::dem

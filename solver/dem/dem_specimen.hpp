@@ -1,0 +1,60 @@
+// DEM specimen between the bar faces (core/specimen_coupling.hpp): grains in a confining tube
+// (CylinderWall, radius R, axis z) closed by two driven planes that follow the bar faces:
+// front wall at z = intrusion_front (normal +z), back wall at z = L - intrusion_back (normal
+// -z). forces() returns the walls' total normal contact forces (compression +). The planes are
+// massless (face_mass() = 0): the bar faces carry the inertia. Energy: kinetic energy of the
+// grains (and tube mode), and internal work = elastic energy gained since construction plus
+// everything dissipated, so energy().total() changes exactly by the work the faces do.
+#pragma once
+#include <optional>
+
+#include "core/specimen_coupling.hpp"
+#include "dem/dem_system.hpp"
+
+namespace kolsky::dem {
+
+/// Walls of the specimen. Defaults: the Table 4.1 linear wall contact (k_n = 2.6e6 N/m,
+/// k_s = 1.6e6 N/m, friction 0.3) on both ends and the tube; a rigid tube.
+struct SpecimenWalls {
+  double length = 0.0093;   ///< L, initial distance between the end planes, m
+  double radius = 0.00955;  ///< inner radius of the confining tube, m
+  WallLaw end_law = linear_spring(2.6e6, 1.6e6, 0.3);
+  WallLaw tube_law = linear_spring(2.6e6, 1.6e6, 0.3);
+  std::optional<TubeCompliance> tube_compliance;  ///< none: rigid tube
+};
+
+class DemSpecimen {
+ public:
+  /// Grains must have their centres inside the tube and between z = 0 and z = L. Throws
+  /// kolsky::InputError otherwise (or for any invalid DemSystem input).
+  DemSpecimen(Particles particles, std::vector<Material> materials, ContactLaw law,
+              const SpecimenWalls& walls, DemOptions options = {});
+
+  double area() const;  ///< pi R^2, m^2
+  double length() const { return walls_.length; }
+  double face_mass() const { return 0.0; }
+  double stable_dt() const { return sys_.stable_dt(); }
+  /// Places the end walls at the face positions of t^n, completes the step in progress
+  /// (forces at t^n, second half kick), returns the wall forces at t^n.
+  FaceForces forces(const FaceState& faces);
+  /// Starts the step t^n -> t^{n+1}: half kick with the t^n forces, drift.
+  void advance(double dt);
+  SpecimenEnergy energy() const;
+  /// (intrusion_front + intrusion_back) / L of the last forces() call.
+  double mean_strain() const;
+  bool finite() const { return sys_.finite(); }
+
+  const DemSystem& system() const { return sys_; }
+  int front_plane() const { return front_; }
+  int back_plane() const { return back_; }
+
+ private:
+  SpecimenWalls walls_;
+  DemSystem sys_;
+  int front_ = 0, back_ = 0;
+  FaceState faces_;
+  bool stepping_ = false;
+  double elastic_0_ = 0;
+};
+
+}  // namespace kolsky::dem

@@ -1,0 +1,339 @@
+// DemSystem: construction, walls, time stepping, neighbour-list upkeep, energies and the
+// stable time step (see dem_system.hpp). The contact kernels live in dem_forces.cpp.
+#include "dem/dem_system.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <sstream>
+#include <type_traits>
+
+#include "core/errors.hpp"
+#include "dem/contact_hertz_mindlin.hpp"
+
+namespace kolsky::dem {
+
+double RollingRetardation::factor(double dt) const {
+  if (factor_per_reference_step == 1.0 || factor_per_reference_step == 0.0)
+    return factor_per_reference_step;
+  return std::pow(factor_per_reference_step, dt / reference_dt);
+}
+
+void DemSystem::ContactStore::resize(std::size_t n) {
+  out.resize(n);
+  elastic.resize(n);
+  active.assign(n, 0);
+}
+
+DemSystem::DemSystem(Particles particles, std::vector<Material> materials, ContactLaw law,
+                     DemOptions options)
+    : p_(std::move(particles)), materials_(std::move(materials)), law_(std::move(law)),
+      opt_(options) {
+  validate(materials_);
+  validate(p_, materials_.size());
+  if (p_.size() == 0) throw InputError("", "dem.particles", "at least one particle is needed");
+  const int n_mat = static_cast<int>(materials_.size());
+  const bool law_matches = std::visit(
+      [n_mat](const auto& l) {
+        using L = std::decay_t<decltype(l)>;
+        if constexpr (std::is_same_v<L, HertzMindlin>) return l.n_materials() == n_mat;
+        else if constexpr (std::is_same_v<L, LsDynaLinear>) return l.n_materials() == n_mat;
+        else return true;
+      },
+      law_);
+  if (!law_matches)
+    throw InputError("", "dem.contact_law", "built for a different number of materials");
+  if (const auto* s = std::get_if<LinearSpring>(&law_)) validate(*s, "dem.contact_law");
+  if (!(opt_.skin_over_min_radius > 0))
+    throw InputError("", "dem.skin_over_min_radius", "must be > 0");
+  if (!(opt_.dt_safety > 0 && opt_.dt_safety <= 1))
+    throw InputError("", "dem.dt_safety", "must be in (0, 1]");
+  const double k = opt_.rolling.factor_per_reference_step;
+  if (!(k >= 0 && k <= 1)) throw InputError("", "dem.rolling.factor", "must be in [0, 1]");
+  if (!(opt_.rolling.reference_dt > 0))
+    throw InputError("", "dem.rolling.reference_dt", "must be > 0");
+  skin_ = opt_.skin_over_min_radius * *std::min_element(p_.radius.begin(), p_.radius.end());
+  dissipated_.assign(p_.size(), 0.0);
+  stable_dt_ = compute_stable_dt();
+}
+
+int DemSystem::add_plane(const PlaneWall& w) {
+  validate(w, "dem.walls.plane");
+  planes_.push_back(PlaneState{w});
+  wall_particle_.clear();  // slots change: wall histories restart
+  wall_first_.clear();
+  list_valid_ = forces_valid_ = false;
+  stable_dt_ = compute_stable_dt();
+  return static_cast<int>(planes_.size()) - 1;
+}
+
+int DemSystem::add_cylinder(const CylinderWall& w) {
+  validate(w, "dem.walls.cylinder");
+  TubeState t{w};
+  if (w.compliance) {
+    t.stiffness = w.compliance->radial_stiffness(w.radius);
+    t.mass = w.compliance->radial_mass(w.radius);
+  }
+  tubes_.push_back(t);
+  wall_particle_.clear();
+  wall_first_.clear();
+  list_valid_ = forces_valid_ = false;
+  stable_dt_ = compute_stable_dt();
+  return static_cast<int>(tubes_.size()) - 1;
+}
+
+void DemSystem::drive_plane(int plane, double offset, double speed) {
+  PlaneState& s = planes_.at(plane);
+  if (!std::holds_alternative<DrivenPlane>(s.wall.motion))
+    throw InputError("", "dem.walls.plane", "drive_plane needs a DrivenPlane");
+  s.offset = offset;
+  s.speed = speed;
+}
+
+Particles& DemSystem::mutable_particles() {
+  list_valid_ = forces_valid_ = false;
+  particles_changed_ = true;
+  return p_;
+}
+
+void DemSystem::refresh_after_edit() {
+  // Radii, masses or the particle count may have changed: revalidate and rederive.
+  validate(p_, materials_.size());
+  skin_ = opt_.skin_over_min_radius * *std::min_element(p_.radius.begin(), p_.radius.end());
+  dissipated_.resize(p_.size(), 0.0);
+  if (pairs_.first.size() != p_.size() + 1) pairs_ = PairList{};
+  wall_particle_.clear();
+  wall_first_.clear();
+  stable_dt_ = compute_stable_dt();
+  particles_changed_ = false;
+}
+
+double DemSystem::compute_stable_dt() const {
+  const double inf = std::numeric_limits<double>::infinity();
+  double m_min = inf, r_max = 0, rayleigh = inf;
+  for (std::size_t i = 0; i < p_.size(); ++i) {
+    m_min = std::min(m_min, p_.mass[i]);
+    r_max = std::max(r_max, p_.radius[i]);
+    rayleigh = std::min(rayleigh, rayleigh_time_step(p_.radius[i], materials_[p_.material[i]]));
+  }
+  bool hertz = std::holds_alternative<HertzMindlin>(law_);
+  double linear = std::visit(
+      [&](const auto& l) {
+        using L = std::decay_t<decltype(l)>;
+        if constexpr (std::is_same_v<L, LinearSpring>) return l.stable_dt(m_min);
+        else if constexpr (std::is_same_v<L, LsDynaLinear>) return l.stable_dt(m_min, r_max);
+        else return inf;
+      },
+      law_);
+  auto wall_limit = [&](const WallLaw& w) {
+    if (const auto* s = std::get_if<LinearSpring>(&w)) linear = std::min(linear, s->stable_dt(m_min));
+    else hertz = true;
+  };
+  for (const auto& s : planes_) wall_limit(s.wall.law);
+  for (const auto& t : tubes_) {
+    wall_limit(t.wall.law);
+    if (t.mass > 0) linear = std::min(linear, std::sqrt(t.mass / t.stiffness));
+  }
+  return opt_.dt_safety * std::min(hertz ? rayleigh : inf, linear);
+}
+
+double DemSystem::stable_dt() const {
+  if (!particles_changed_) return stable_dt_;
+  validate(p_, materials_.size());  // edited since the last step: derive afresh
+  return compute_stable_dt();
+}
+
+void DemSystem::check_dt(double dt) const {
+  if (dt > 0 && dt <= stable_dt_ * (1 + 1e-12)) return;  // refreshed by begin_step
+  std::ostringstream s;
+  s << "dt = " << dt << " s must be > 0 and <= the stable limit " << stable_dt_ << " s ("
+    << opt_.dt_safety << " x min(Rayleigh step of the smallest grain, sqrt(m/k) of the "
+    << "stiffest linear contact, tube ring mode))";
+  throw InputError("", "dem.dt", s.str());
+}
+
+void DemSystem::step(double dt) {
+  begin_step(dt);
+  finish_step();
+}
+
+void DemSystem::begin_step(double dt) {
+  if (particles_changed_) refresh_after_edit();
+  check_dt(dt);
+  if (pending_dt_ > 0) finish_step();
+  if (!forces_valid_) compute_forces(0.0);
+  kick(0.5 * dt);
+  drift(dt);
+  time_ += dt;
+  pending_dt_ = dt;
+}
+
+void DemSystem::finish_step() {
+  const double dt = pending_dt_;
+  compute_forces(dt);
+  kick(0.5 * dt);
+  retard(dt);
+  pending_dt_ = 0;
+}
+
+void DemSystem::kick(double h) {
+  const auto n = static_cast<std::ptrdiff_t>(p_.size());
+  Vec3* v = p_.v.data();
+  Vec3* w = p_.omega.data();
+  const Vec3* f = p_.f.data();
+  const Vec3* t = p_.torque.data();
+  const double* m = p_.mass.data();
+  const double* in = p_.inertia.data();
+#pragma omp parallel for schedule(static) if (n >= kParallelMin)
+  for (std::ptrdiff_t i = 0; i < n; ++i) {
+    v[i] += (h / m[i]) * f[i];
+    w[i] += (h / in[i]) * t[i];
+  }
+  for (auto& tb : tubes_)
+    if (tb.mass > 0) tb.u_dot += h * (tb.force - tb.stiffness * tb.u) / tb.mass;
+}
+
+void DemSystem::drift(double dt) {
+  const auto n = static_cast<std::ptrdiff_t>(p_.size());
+  Vec3* x = p_.x.data();
+  const Vec3* v = p_.v.data();
+  const bool track = list_valid_;
+  const Vec3* x0 = x_at_build_.data();
+  double m = max_disp2_;
+#pragma omp parallel for schedule(static) reduction(max : m) if (n >= kParallelMin)
+  for (std::ptrdiff_t i = 0; i < n; ++i) {
+    x[i] += dt * v[i];
+    if (track) m = std::max(m, norm2(x[i] - x0[i]));
+  }
+  max_disp2_ = m;
+  for (auto& s : planes_) {
+    if (const auto* pr = std::get_if<PrescribedPlane>(&s.wall.motion)) {
+      s.offset += pr->velocity.displacement(time_, time_ + dt);
+      s.speed = pr->velocity.at(time_ + dt);
+    }
+  }
+  for (auto& tb : tubes_) tb.u += dt * tb.u_dot;
+}
+
+void DemSystem::retard(double dt) {
+  const double k = opt_.rolling.factor(dt);
+  if (k == 1.0) return;
+  const auto n = static_cast<std::ptrdiff_t>(p_.size());
+  Vec3* w = p_.omega.data();
+  const double* in = p_.inertia.data();
+  double* d = dissipated_.data();
+#pragma omp parallel for schedule(static) if (n >= kParallelMin)
+  for (std::ptrdiff_t i = 0; i < n; ++i) {
+    d[i] += 0.5 * in[i] * norm2(w[i]) * (1 - k * k);
+    w[i] *= k;
+  }
+}
+
+bool DemSystem::needs_rebuild() const {
+  if (!list_valid_) return true;
+  const double half = 0.5 * skin_;
+  if (max_disp2_ > half * half) return true;
+  for (const auto& s : planes_)
+    if (std::abs(s.offset - s.offset_at_build) > half) return true;
+  for (const auto& t : tubes_)
+    if (std::abs(t.u - t.u_at_build) > half) return true;
+  return false;
+}
+
+void DemSystem::rebuild() {
+  pairs_ = build_pair_list(p_.x, p_.radius, skin_, pairs_);
+  pair_out_.resize(pairs_.size());
+  build_wall_candidates();
+  const int n = static_cast<int>(p_.size());
+  // Counting sort of the pairs by partner (then pair order) into slots, and of the wall
+  // contacts by grain.
+  partner_first_.assign(static_cast<std::size_t>(n) + 1, 0);
+  for (int jj : pairs_.j) ++partner_first_[jj + 1];
+  for (int q = 0; q < n; ++q) partner_first_[q + 1] += partner_first_[q];
+  pair_slot_.resize(pairs_.size());
+  std::vector<int> fill(partner_first_.begin(), partner_first_.end() - 1);
+  for (std::size_t k = 0; k < pairs_.size(); ++k) pair_slot_[k] = fill[pairs_.j[k]]++;
+  wall_first_of_.assign(static_cast<std::size_t>(n) + 1, 0);
+  for (int q : wall_particle_) ++wall_first_of_[q + 1];
+  for (int q = 0; q < n; ++q) wall_first_of_[q + 1] += wall_first_of_[q];
+  wall_entry_.resize(wall_particle_.size());
+  fill.assign(wall_first_of_.begin(), wall_first_of_.end() - 1);
+  for (std::size_t c = 0; c < wall_particle_.size(); ++c)
+    wall_entry_[fill[wall_particle_[c]]++] = static_cast<int>(c);
+  x_at_build_ = p_.x;
+  max_disp2_ = 0;
+  for (auto& s : planes_) s.offset_at_build = s.offset;
+  for (auto& t : tubes_) t.u_at_build = t.u;
+  list_valid_ = true;
+  ++n_rebuilds_;
+}
+
+void DemSystem::build_wall_candidates() {
+  const std::size_t n_slots = planes_.size() + tubes_.size();
+  std::vector<int> particle, first(n_slots + 1, 0);
+  std::vector<Vec3> history;
+  const bool carry = wall_first_.size() == n_slots + 1;
+  for (std::size_t w = 0; w < n_slots; ++w) {
+    std::size_t a = carry ? wall_first_[w] : 0;
+    const std::size_t a_end = carry ? wall_first_[w + 1] : 0;
+    for (std::size_t i = 0; i < p_.size(); ++i) {
+      const Vec3& x = p_.x[i];
+      double gap;
+      if (w < planes_.size()) {
+        const auto& s = planes_[w];
+        gap = dot(x - s.wall.point - s.offset * s.wall.normal, s.wall.normal) - p_.radius[i];
+      } else {
+        const auto& t = tubes_[w - planes_.size()];
+        const double rho = std::hypot(x.x - t.wall.cx, x.y - t.wall.cy);
+        gap = t.wall.radius + t.u - rho - p_.radius[i];
+      }
+      if (gap >= skin_) continue;
+      particle.push_back(static_cast<int>(i));
+      Vec3 h{};
+      while (a < a_end && wall_particle_[a] < static_cast<int>(i)) ++a;
+      if (a < a_end && wall_particle_[a] == static_cast<int>(i)) h = wall_history_[a];
+      history.push_back(h);
+    }
+    first[w + 1] = static_cast<int>(particle.size());
+  }
+  wall_particle_.swap(particle);
+  wall_first_.swap(first);
+  wall_history_.swap(history);
+  wall_out_.resize(wall_particle_.size());
+  wall_normal_.resize(wall_particle_.size());
+}
+
+DemEnergy DemSystem::energy() const {
+  DemEnergy e;
+  e.kinetic = p_.kinetic_energy();
+  for (std::size_t k = 0; k < pairs_.size(); ++k)  // slot order
+    if (pair_out_.active[k]) e.elastic += pair_out_.elastic[k];
+  for (std::size_t c = 0; c < wall_particle_.size(); ++c)
+    if (wall_out_.active[c]) e.elastic += wall_out_.elastic[c];
+  for (const auto& t : tubes_) {
+    e.kinetic += 0.5 * t.mass * t.u_dot * t.u_dot;
+    e.elastic += 0.5 * t.stiffness * t.u * t.u;
+  }
+  for (double d : dissipated_) e.dissipated += d;
+  for (const auto& s : planes_) e.wall_work += s.work;
+  return e;
+}
+
+std::size_t DemSystem::n_contacts() const {
+  return static_cast<std::size_t>(std::count(pair_out_.active.begin(), pair_out_.active.end(), 1));
+}
+
+std::size_t DemSystem::n_wall_contacts() const {
+  return static_cast<std::size_t>(std::count(wall_out_.active.begin(), wall_out_.active.end(), 1));
+}
+
+bool DemSystem::finite() const {
+  if (!p_.finite()) return false;
+  for (const auto& t : tubes_)
+    if (!std::isfinite(t.u) || !std::isfinite(t.u_dot)) return false;
+  for (const auto& s : planes_)
+    if (!std::isfinite(s.offset) || !std::isfinite(s.force)) return false;
+  return true;
+}
+
+}  // namespace kolsky::dem

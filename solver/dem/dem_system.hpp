@@ -1,0 +1,165 @@
+// A DEM assembly: particles (struct of arrays), one grain-grain contact law, plane and cylinder
+// walls, a Verlet pair list, and the explicit integrator: velocity Verlet (kick-drift-kick;
+// dashpots see mid-step velocities, as in LIGGGHTS), then rotational retardation w <- k w,
+// Eqs. 4.12-4.14, with k_run = k_ref^(dt/dt_ref) (0.99999975 per 1 ns, Sec. 4.3). Each contact
+// is computed once and gathered per particle in a fixed order, so results are bitwise the same
+// for any OpenMP thread count. Stable dt = safety x min(Rayleigh step of the smallest grain,
+// sqrt(m/k) of the stiffest linear contact, tube ring mode). Details: docs/dem.md.
+#pragma once
+#include <cstddef>
+#include <vector>
+
+#include "dem/contact_law.hpp"
+#include "dem/neighbour_list.hpp"
+#include "dem/particles.hpp"
+#include "dem/walls.hpp"
+
+namespace kolsky::dem {
+
+/// Rotational resistance by angular-velocity retardation, Eqs. 4.12-4.14.
+struct RollingRetardation {
+  double factor_per_reference_step = 1.0;  ///< k_lambda^zeta per reference step (1: none), -
+  double reference_dt = 1e-9;              ///< step the factor was given for, s
+
+  /// k_run = k_ref^(dt / dt_ref); 0 stays 0 (full restraint), 1 stays 1.
+  double factor(double dt) const;
+};
+
+struct DemOptions {
+  double skin_over_min_radius = 0.5;  ///< Verlet skin as a multiple of the smallest radius
+  double dt_safety = 0.3;             ///< stable dt = safety x the smallest limit (see header)
+  RollingRetardation rolling;
+};
+
+/// Energy ledger (J). kinetic + elastic + dissipated - wall_work is conserved up to the
+/// integration error (and the non-potential part of Mindlin's overlap-dependent k_t).
+struct DemEnergy {
+  double kinetic = 0;     ///< particles (translation + rotation) and the tube's radial mode
+  double elastic = 0;     ///< contact springs and the tube's hoop spring
+  double dissipated = 0;  ///< dashpots, sliding, rolling friction and rolling retardation
+  double wall_work = 0;   ///< work done by moving planes on the particles
+};
+
+class DemSystem {
+ public:
+  /// Precondition: `law` was built for `materials`. Throws kolsky::InputError on bad input.
+  DemSystem(Particles particles, std::vector<Material> materials, ContactLaw law,
+            DemOptions options = {});
+
+  /// Adds a wall; returns its index among the planes (cylinders). Resets wall-contact history.
+  int add_plane(const PlaneWall& w);
+  int add_cylinder(const CylinderWall& w);
+  /// Sets a DrivenPlane's offset along its normal (m) and speed (m/s) for the coming force
+  /// evaluation.
+  void drive_plane(int plane, double offset, double speed);
+
+  /// Largest dt step() accepts (s).
+  double stable_dt() const;
+  /// One step of size dt (s): begin_step(dt) then finish_step(). Throws kolsky::InputError
+  /// ("dem.dt") if dt > stable_dt().
+  void step(double dt);
+  /// First half: half kick with the current forces, drift, prescribed walls move.
+  void begin_step(double dt);
+  /// Second half: (neighbour rebuild if needed), forces at the new positions, half kick,
+  /// rotational retardation.
+  void finish_step();
+  /// Evaluates the forces of the current state without advancing (no history increment).
+  void compute_forces() { compute_forces(0.0); }
+
+  const Particles& particles() const { return p_; }
+  /// Write access (velocities, positions, even radii or added particles): the next step or
+  /// force evaluation revalidates, rederives skin and stable dt, and rebuilds the lists.
+  Particles& mutable_particles();
+  const std::vector<Material>& materials() const { return materials_; }
+  double time() const { return time_; }
+
+  int n_planes() const { return static_cast<int>(planes_.size()); }
+  int n_cylinders() const { return static_cast<int>(tubes_.size()); }
+  const PlaneWall& plane(int k) const { return planes_[k].wall; }
+  double plane_offset(int k) const { return planes_[k].offset; }
+  double plane_speed(int k) const { return planes_[k].speed; }
+  /// Total normal contact force between plane k and the particles (compression +, N).
+  double plane_force(int k) const { return planes_[k].force; }
+  /// Total outward radial contact force on cylinder k (N) and its radial displacement (m).
+  double cylinder_force(int k) const { return tubes_[k].force; }
+  double cylinder_displacement(int k) const { return tubes_[k].u; }
+
+  DemEnergy energy() const;
+  std::size_t n_pairs() const { return pairs_.size(); }
+  std::size_t n_contacts() const;       ///< touching grain pairs
+  std::size_t n_wall_contacts() const;  ///< touching grain-wall contacts
+  std::size_t n_rebuilds() const { return n_rebuilds_; }
+  double skin() const { return skin_; }
+  bool finite() const;
+
+ private:
+  // Loops shorter than this run on one thread: a parallel region costs microseconds, which
+  // would dominate the one- and two-particle verification runs.
+  static constexpr std::ptrdiff_t kParallelMin = 2048;
+
+  struct PlaneState {
+    PlaneWall wall;
+    double offset = 0, speed = 0, offset_at_build = 0;
+    double force = 0, offset_at_force = 0, work = 0;
+  };
+  struct TubeState {
+    CylinderWall wall;
+    double u = 0, u_dot = 0, u_at_build = 0, force = 0, stiffness = 0, mass = 0;
+  };
+  // Per-contact outputs. ContactOut is what the gathering particle receives (for a pair: the
+  // partner j, since i sums its own side while computing; for a wall: the grain).
+  struct ContactOut {
+    Vec3 force, torque;
+    double dissipated = 0;
+  };
+  struct ContactStore {
+    std::vector<ContactOut> out;
+    std::vector<double> elastic;
+    std::vector<unsigned char> active;
+    void resize(std::size_t n);
+  };
+
+  void compute_forces(double dt);
+  template <class Law> void pair_forces(const Law& law, double dt);
+  template <class Law> void plane_forces(const Law& law, int k, double dt);
+  template <class Law> void tube_forces(const Law& law, int k, double dt);
+  void gather();
+  void kick(double half_dt);
+  void drift(double dt);
+  void retard(double dt);
+  bool needs_rebuild() const;
+  void rebuild();
+  void build_wall_candidates();
+  void check_dt(double dt) const;
+  double compute_stable_dt() const;
+  void refresh_after_edit();
+
+  Particles p_;
+  std::vector<Material> materials_;
+  ContactLaw law_;
+  DemOptions opt_;
+  double skin_ = 0, time_ = 0, pending_dt_ = 0, stable_dt_ = 0;
+  bool list_valid_ = false, forces_valid_ = false, particles_changed_ = false;
+  std::size_t n_rebuilds_ = 0;
+  double max_disp2_ = 0;
+
+  std::vector<PlaneState> planes_;
+  std::vector<TubeState> tubes_;
+
+  PairList pairs_;
+  ContactStore pair_out_;  // indexed by slot (see below)
+  // Wall-contact candidates, grouped by wall slot (planes, then cylinders), sorted by particle.
+  std::vector<int> wall_particle_, wall_first_;
+  std::vector<Vec3> wall_history_;
+  ContactStore wall_out_;
+  std::vector<double> wall_normal_;  // normal force of each wall contact, N
+  // Gather lists. Pair k stores its partner's side in slot pair_slot_[k] of pair_out_; the
+  // slots of particle q are [partner_first_[q], partner_first_[q+1]) (pair order), so the
+  // gather streams through memory. Wall contacts of q: wall_entry_[wall_first_of_[q] ...].
+  std::vector<int> pair_slot_, partner_first_, wall_first_of_, wall_entry_;
+
+  std::vector<Vec3> x_at_build_;
+  std::vector<double> dissipated_;  // per particle, J
+};
+
+}  // namespace kolsky::dem

@@ -1,0 +1,144 @@
+// Cell-grid construction of the Verlet pair list (see neighbour_list.hpp).
+#include "dem/neighbour_list.hpp"
+
+#include <omp.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+
+namespace kolsky::dem {
+
+namespace {
+
+struct CellGrid {
+  Vec3 lo;
+  double cell = 1;
+  int nx = 1, ny = 1, nz = 1;
+  std::vector<int> start, items;  // particles of cell c: items[start[c] .. start[c+1])
+
+  int clamp_index(double u, int n) const {
+    const double c = std::floor(u / cell);
+    return c < 0 ? 0 : (c >= n ? n - 1 : static_cast<int>(c));
+  }
+  int cell_of(const Vec3& p) const {
+    return (clamp_index(p.z - lo.z, nz) * ny + clamp_index(p.y - lo.y, ny)) * nx +
+           clamp_index(p.x - lo.x, nx);
+  }
+};
+
+CellGrid make_grid(const std::vector<Vec3>& x, double cell) {
+  CellGrid g;
+  Vec3 lo{std::numeric_limits<double>::max(), std::numeric_limits<double>::max(),
+          std::numeric_limits<double>::max()};
+  Vec3 hi = -lo;
+  for (const auto& p : x) {
+    lo = {std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z)};
+    hi = {std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z)};
+  }
+  // Cap the cell count near 2 per particle: a stray particle far away then coarsens the grid
+  // instead of exhausting memory.
+  const double max_cells = std::max<double>(64, 2.0 * static_cast<double>(x.size()));
+  auto dims = [&](double c) {
+    return std::array<double, 3>{std::floor((hi.x - lo.x) / c) + 1,
+                                 std::floor((hi.y - lo.y) / c) + 1,
+                                 std::floor((hi.z - lo.z) / c) + 1};
+  };
+  auto d = dims(cell);
+  while (d[0] * d[1] * d[2] > max_cells) {
+    cell *= 1.26;  // ~2^(1/3): halves the cell count per pass
+    d = dims(cell);
+  }
+  g.lo = lo;
+  g.cell = cell;
+  g.nx = static_cast<int>(d[0]);
+  g.ny = static_cast<int>(d[1]);
+  g.nz = static_cast<int>(d[2]);
+  const std::size_t n_cells = static_cast<std::size_t>(g.nx) * g.ny * g.nz;
+  std::vector<int> cell_of(x.size());
+  g.start.assign(n_cells + 1, 0);
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    cell_of[i] = g.cell_of(x[i]);
+    ++g.start[cell_of[i] + 1];
+  }
+  for (std::size_t c = 0; c < n_cells; ++c) g.start[c + 1] += g.start[c];
+  g.items.resize(x.size());
+  std::vector<int> fill(g.start.begin(), g.start.end() - 1);
+  for (std::size_t i = 0; i < x.size(); ++i) g.items[fill[cell_of[i]]++] = static_cast<int>(i);
+  return g;
+}
+
+}  // namespace
+
+PairList build_pair_list(const std::vector<Vec3>& x, const std::vector<double>& r, double skin,
+                         const PairList& old) {
+  const int n = static_cast<int>(x.size());
+  PairList out;
+  out.first.assign(static_cast<std::size_t>(n) + 1, 0);
+  if (n == 0) return out;
+  const double r_max = *std::max_element(r.begin(), r.end());
+  const CellGrid g = make_grid(x, 0.5 * (2 * r_max + skin));
+
+  // Each thread scans a contiguous block of particles into its own buffer; the buffers are
+  // concatenated in block order, so the list is the same for every thread count.
+  std::vector<std::vector<int>> partners;
+  std::vector<int> count(n, 0);
+#pragma omp parallel if (n >= 2048)  // small systems: a parallel region costs more than it saves
+  {
+    const int nt = omp_get_num_threads(), t = omp_get_thread_num();
+#pragma omp single
+    partners.resize(nt);
+    const int b0 = static_cast<int>(static_cast<std::int64_t>(n) * t / nt);
+    const int b1 = static_cast<int>(static_cast<std::int64_t>(n) * (t + 1) / nt);
+    std::vector<int>& mine = partners[t];
+    for (int i = b0; i < b1; ++i) {
+      const Vec3 p = x[i];
+      const double reach = r[i] + r_max + skin;
+      const int x0 = g.clamp_index(p.x - reach - g.lo.x, g.nx);
+      const int x1 = g.clamp_index(p.x + reach - g.lo.x, g.nx);
+      const int y0 = g.clamp_index(p.y - reach - g.lo.y, g.ny);
+      const int y1 = g.clamp_index(p.y + reach - g.lo.y, g.ny);
+      const int z0 = g.clamp_index(p.z - reach - g.lo.z, g.nz);
+      const int z1 = g.clamp_index(p.z + reach - g.lo.z, g.nz);
+      const std::size_t before = mine.size();
+      for (int cz = z0; cz <= z1; ++cz)
+        for (int cy = y0; cy <= y1; ++cy)
+          for (int cx = x0; cx <= x1; ++cx) {
+            const int c = (cz * g.ny + cy) * g.nx + cx;
+            for (int s = g.start[c]; s < g.start[c + 1]; ++s) {
+              const int j = g.items[s];
+              if (j <= i) continue;
+              const double cut = r[i] + r[j] + skin;
+              if (norm2(x[j] - p) < cut * cut) mine.push_back(j);
+            }
+          }
+      std::sort(mine.begin() + static_cast<std::ptrdiff_t>(before), mine.end());
+      count[i] = static_cast<int>(mine.size() - before);
+    }
+#pragma omp barrier
+#pragma omp single
+    {
+      for (int i = 0; i < n; ++i) out.first[i + 1] = out.first[i] + count[i];
+      out.j.resize(out.first[n]);
+      out.i.resize(out.first[n]);
+      out.history.assign(out.first[n], Vec3{});
+    }
+    std::copy(mine.begin(), mine.end(), out.j.begin() + out.first[b0]);
+    for (int i = b0; i < b1; ++i) {
+      std::fill(out.i.begin() + out.first[i], out.i.begin() + out.first[i + 1], i);
+      // Carry the history: merge the sorted partner lists of i in the old and new lists.
+      if (old.first.size() != out.first.size()) continue;
+      int a = old.first[i];
+      const int a_end = old.first[i + 1];
+      for (int k = out.first[i]; k < out.first[i + 1] && a < a_end; ++k) {
+        while (a < a_end && old.j[a] < out.j[k]) ++a;
+        if (a < a_end && old.j[a] == out.j[k]) out.history[k] = old.history[a];
+      }
+    }
+  }
+  return out;
+}
+
+}  // namespace kolsky::dem

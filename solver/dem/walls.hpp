@@ -1,0 +1,71 @@
+// Walls of the DEM specimen, each with its own contact law (WallLaw): infinite planes moving
+// along their normal (fixed, prescribed velocity history, or driven from outside by a bar
+// face), and the inner surface of a cylinder parallel to z (the confining tube), rigid or
+// radially compliant as a thin elastic ring with one radial degree of freedom: hoop stiffness
+// K = 2 pi H E t / R (p = E t u / R^2) and mass rho 2 pi R t H (docs/dem.md says why one DOF
+// rather than a spring per contact). SI units.
+#pragma once
+#include <optional>
+#include <variant>
+#include <vector>
+
+#include "dem/contact_law.hpp"
+#include "dem/vec3.hpp"
+
+namespace kolsky::dem {
+
+/// Piecewise-linear speed history s'(t) along a plane's normal (m/s at times in s), held
+/// constant outside the table. time strictly increasing, same length as speed (>= 1).
+struct VelocityHistory {
+  std::vector<double> time, speed;
+
+  double at(double t) const;
+  /// Exact integral of the piecewise-linear speed over [t0, t1] (m).
+  double displacement(double t0, double t1) const;
+};
+
+struct FixedPlane {};
+struct PrescribedPlane {
+  VelocityHistory velocity;
+};
+/// Position and speed set from outside each step (DemSystem::drive_plane).
+struct DrivenPlane {};
+using PlaneMotion = std::variant<FixedPlane, PrescribedPlane, DrivenPlane>;
+
+/// Plane through `point` (at t = 0) with unit `normal` pointing into the particle region. It
+/// moves along the normal by offset s(t); contacts push particles along +normal.
+struct PlaneWall {
+  Vec3 point;
+  Vec3 normal{0, 0, 1};
+  PlaneMotion motion = FixedPlane{};
+  WallLaw law = linear_spring(2.6e6, 1.6e6, 0.3);  ///< Table 4.1 wall contact
+};
+
+/// Thin elastic confining tube (radial compliance of CylinderWall).
+struct TubeCompliance {
+  double youngs_modulus = 200e9;  ///< E of the tube, Pa
+  double thickness = 0.005;       ///< wall thickness t, m
+  double density = 8100;          ///< kg/m^3
+  double height = 0.0093;         ///< H, length over which the specimen pressure acts, m
+
+  /// K = 2 pi H E t / R (N/m) for inner radius R.
+  double radial_stiffness(double radius) const;
+  /// m = rho 2 pi R t H (kg).
+  double radial_mass(double radius) const;
+};
+
+/// Inner surface of a cylinder of radius `radius` around the axis x = cx, y = cy (parallel to
+/// z), infinitely long; particles live inside. Rigid unless `compliance` is set.
+struct CylinderWall {
+  double cx = 0, cy = 0;
+  double radius = 0.00955;
+  std::optional<TubeCompliance> compliance;
+  WallLaw law = linear_spring(2.6e6, 1.6e6, 0.3);  ///< Table 4.1 wall contact
+};
+
+/// Throws kolsky::InputError for a degenerate wall (zero normal, radius <= 0, bad history,
+/// invalid linear law).
+void validate(const PlaneWall& w, const char* path);
+void validate(const CylinderWall& w, const char* path);
+
+}  // namespace kolsky::dem
