@@ -14,4 +14,8 @@ TEST(VerifySpecimen, EnergyLoopAndConvergence) {
   for (const auto& c : specimen_checks()) EXPECT_TRUE(c.pass()) << c;
 }
 
+TEST(VerifyFeCoupling, EnergyAndConfinedModulus) {
+  for (const auto& c : fe_coupling_checks()) EXPECT_TRUE(c.pass()) << c;
+}
+
 }  // namespace kolsky::verify

@@ -40,8 +40,12 @@ void CharacteristicBar::step(double t, double dt, double specimen_force) {
                  (face_mass_ + 0.5 * dt * damping);
     rate_step_ = 0.5 * (w_old + rate_half_);
   } else {
+    // Massless face: the characteristic relation fixes w^n; the position advances with the
+    // Adams-Bashforth extrapolation w^{n+1/2} = 1.5 w^n - 0.5 w^{n-1} (second order; stable
+    // while dt k_face / (A Z) < 1, far from the penalty/wall stiffnesses met in practice).
+    const double w_prev = rate_step_;
     rate_step_ = (drive - specimen_force) / damping;
-    rate_half_ = rate_step_;
+    rate_half_ = s_out_.empty() ? rate_step_ : 1.5 * rate_step_ - 0.5 * w_prev;
   }
   const double s_out = s_in_step_ - z_ * rate_step_;
   s_out_.push_back(s_out);

@@ -41,5 +41,6 @@ double crossing_time(const std::vector<double>& t, const std::vector<double>& y,
 std::vector<CheckResult> bar_checks();       // checks_bars.cpp
 std::vector<CheckResult> specimen_checks();  // checks_specimen.cpp
 std::vector<CheckResult> analysis_checks();  // checks_analysis.cpp
+std::vector<CheckResult> fe_coupling_checks();  // checks_fe_coupling.cpp
 
 }  // namespace kolsky::verify
