@@ -1,0 +1,107 @@
+// Packing generator (dem/packing.hpp) on the reconstructed Song et al. (2009) grain-size curve
+// upscaled by N = 2 (the dissertation's Ch. 4 specimen), in small cylinders so the tests stay
+// fast: porosity, count, grain-size curve, containment and overlaps, determinism.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+#include <string>
+
+#include "core/errors.hpp"
+#include "dem/packing.hpp"
+#include "io/csv.hpp"
+#include "psd/sampling.hpp"
+
+namespace kolsky::dem {
+namespace {
+
+psd::GrainSizeCurve song_curve(double upscale) {
+  const io::CsvTable t = io::read_csv(std::string(KOLSKY_SOURCE_DIR) +
+                                      "/data/digitized/chapter4/song2009_psd_reconstructed.csv");
+  psd::GrainSizeCurve c{t.column("diameter_m"), t.column("percent_passing")};
+  return psd::upscale(c, upscale);
+}
+
+PackingParams small_song(double diameter, double length, std::uint64_t seed) {
+  PackingParams p;
+  p.curve = song_curve(2.0);
+  p.porosity = 0.44;
+  p.diameter = diameter;
+  p.length = length;
+  p.seed = seed;
+  p.material = Material{78e9, 0.3, 2650};
+  return p;
+}
+
+TEST(DemPacking, ReachesPorosityCountCurveAndStaysInside) {
+  const PackingParams in = small_song(0.006, 0.004, 7);  // ~1,500 grains
+  const PackingResult r = generate_packing(in);
+  const double volume = psd::cylinder_volume(in.diameter, in.length);
+  // Porosity: sample_diameters meets V(1 - n) within half the largest grain's volume, so
+  // |n - n_target| <= pi d_max^3 / 12 / V (0.0040 here); the radii end exactly at target.
+  const double d_max = in.curve.d_max();
+  const double tol_n = std::numbers::pi * d_max * d_max * d_max / 12 / volume;
+  EXPECT_NEAR(r.porosity, 0.44, tol_n);
+  // Count: the sample's count follows the curve's mean grain volume; stratified sampling
+  // (fine-to-coarse bins) keeps it within a few percent of V(1 - n)/v_mean at ~1,500 grains.
+  EXPECT_GT(r.count, 1000u);
+  EXPECT_NEAR(static_cast<double>(r.count) / r.expected_count, 1.0, 0.05);
+  // Grain-size curve of the generated grains vs the input, within the sampling guarantee.
+  std::vector<double> diam;
+  for (double rad : r.particles.radius) diam.push_back(2 * rad);
+  EXPECT_DOUBLE_EQ(psd::max_passing_deviation(in.curve, diam), r.curve_deviation);
+  EXPECT_LE(r.curve_deviation, r.curve_deviation_bound);
+  EXPECT_LT(r.curve_deviation, 2.0);
+  // Settled: every grain inside the cylinder and between the planes, overlaps < 1e-3 r_mean.
+  EXPECT_TRUE(r.settled);
+  EXPECT_LT(r.max_overlap, in.overlap_tolerance);
+  double mean_r = 0;
+  for (double rad : r.particles.radius) mean_r += rad;
+  mean_r /= static_cast<double>(r.count);
+  const double slack = in.overlap_tolerance * mean_r;
+  for (std::size_t i = 0; i < r.count; ++i) {
+    const Vec3& x = r.particles.x[i];
+    const double rad = r.particles.radius[i];
+    ASSERT_LE(std::hypot(x.x, x.y) + rad, in.diameter / 2 + slack) << i;
+    ASSERT_GE(x.z - rad, -slack) << i;
+    ASSERT_LE(x.z + rad, in.length + slack) << i;
+    ASSERT_EQ(r.particles.v[i].x, 0.0);
+  }
+  EXPECT_DOUBLE_EQ(max_packing_overlap(r.particles, in.diameter, in.length) / mean_r,
+                   r.max_overlap);
+  EXPECT_GE(r.coordination, 0.0);
+  EXPECT_LT(r.coordination, 12.0);
+}
+
+TEST(DemPacking, DeterministicForASeed) {
+  const PackingParams in = small_song(0.004, 0.003, 11);  // ~450 grains
+  const PackingResult a = generate_packing(in), b = generate_packing(in);
+  ASSERT_EQ(a.count, b.count);
+  for (std::size_t i = 0; i < a.count; ++i) {
+    ASSERT_EQ(a.particles.x[i].x, b.particles.x[i].x);
+    ASSERT_EQ(a.particles.x[i].y, b.particles.x[i].y);
+    ASSERT_EQ(a.particles.x[i].z, b.particles.x[i].z);
+    ASSERT_EQ(a.particles.radius[i], b.particles.radius[i]);
+  }
+  EXPECT_EQ(a.steps, b.steps);
+  PackingParams other = in;
+  other.seed = 12;
+  const PackingResult c = generate_packing(other);
+  bool differs = c.count != a.count;
+  for (std::size_t i = 0; !differs && i < a.count; ++i) differs = c.particles.x[i].x != a.particles.x[i].x;
+  EXPECT_TRUE(differs);
+}
+
+TEST(DemPacking, RefusesBadInput) {
+  PackingParams in = small_song(0.004, 0.003, 1);
+  in.porosity = 1.0;
+  EXPECT_THROW(generate_packing(in), InputError);
+  in = small_song(0.004, 0.003, 1);
+  in.initial_solid_fraction = 0.6;  // above 1 - n
+  EXPECT_THROW(generate_packing(in), InputError);
+  in = small_song(0.001, 0.003, 1);  // largest grain (1.2 mm) does not fit
+  EXPECT_THROW(generate_packing(in), InputError);
+}
+
+}  // namespace
+}  // namespace kolsky::dem
