@@ -3,6 +3,8 @@
 // and with a deterministic +-0.5 % multiplicative perturbation of every sample.
 #include <gtest/gtest.h>
 
+#include "test_support.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -18,11 +20,7 @@
 namespace kolsky::eos {
 namespace {
 
-void record(const std::string& key, double value) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.4e", value);
-  ::testing::Test::RecordProperty(key, buf);
-}
+using kolsky::testing::record;
 
 struct Twin {
   std::vector<double> eps, p;

@@ -5,6 +5,8 @@
 // above, larger P_E share at 11 %), the loading/tangent tables and the branch work identities.
 #include <gtest/gtest.h>
 
+#include "test_support.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -18,11 +20,7 @@
 namespace kolsky::eos {
 namespace {
 
-void record(const std::string& key, double value) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.4e", value);
-  ::testing::Test::RecordProperty(key, buf);
-}
+using kolsky::testing::record;
 
 const OdeSettings kTight{Stepper::dopri5, 1e-12, 1e-12, 1e-4, 1000000};
 

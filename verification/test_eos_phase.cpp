@@ -4,6 +4,8 @@
 // Measured errors are written as test properties (--gtest_output=json shows them).
 #include <gtest/gtest.h>
 
+#include "test_support.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -16,11 +18,7 @@
 namespace kolsky::eos {
 namespace {
 
-void record(const std::string& key, double value) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.4e", value);
-  ::testing::Test::RecordProperty(key, buf);
-}
+using kolsky::testing::record;
 
 double rel(double a, double b) { return std::abs(a - b) / std::abs(b); }
 

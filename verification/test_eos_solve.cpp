@@ -8,6 +8,8 @@
 //     dP/deps_v against central differences of the solved path.
 #include <gtest/gtest.h>
 
+#include "test_support.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -22,11 +24,7 @@
 namespace kolsky::eos {
 namespace {
 
-void record(const std::string& key, double value) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.4e", value);
-  ::testing::Test::RecordProperty(key, buf);
-}
+using kolsky::testing::record;
 
 ThreePhaseParams at_water(double w) {
   return params_at_water_content(dissertation_moisture_law(), ThreePhaseParams{}, w);

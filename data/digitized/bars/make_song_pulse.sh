@@ -1,32 +1,7 @@
 #!/usr/bin/env bash
-# Reconstructs the incident stress pulse of the Song et al. (2009) 480/s test (Sec. 2.3.4)
-# from the only numbers the text prints: a strain rate of about 480/s from 125 us to 350 us.
-# Method (inverse design under equilibrium, for a 1-D elastic stand-in of D = 230 MPa):
-#   target rate r(t): 480 sin^2(pi t / 250 us) rise on [0, 125] us, 480 on [125, 350] us,
-#   480 cos^2(pi (t - 350 us) / 200 us) fall on [350, 450] us, 0 after;
-#   strain e(t) = int r dt;  specimen stress s = D e;
-#   equilibrium + characteristic bar relations: v_front - v_back = L r,
-#   v_front = (2 s_i - s)/(rho c), v_back = s/(rho c)  =>  s_i = rho c L r / 2 + s;
-#   after 450 us the pulse ramps linearly to zero over 100 us.
-# t = 0 is the arrival at the specimen face; applied at the free end the same table is simply
-# delayed by L_I / c. Usage: make_song_pulse.sh > song2009_incident_480_reconstructed.csv
+# Reconstructs the incident stress pulse of the Song et al. (2009) 480/s test (Sec. 2.3.4): the
+# inverse design of ../chapter2/make_song_pulse_rate.sh (method described there) at 480/s, the
+# only numbers the text prints being a strain rate of about 480/s from 125 us to 350 us.
+# Usage: make_song_pulse.sh > song2009_incident_480_reconstructed.csv
 set -euo pipefail
-awk 'BEGIN {
-  pi = 3.141592653589793; rho = 8100; c = sqrt(200e9 / 8100); L = 0.0093; D = 230e6;
-  dt = 1e-6; e = 0; r_prev = 0;
-  print "# time_s,stress_pa  (reconstructed: see make_song_pulse.sh and the .meta.json)";
-  print "time_s,stress_pa";
-  for (i = 0; i <= 550; i++) {
-    t = i * dt; us = i;
-    if (us <= 125) r = 480 * sin(pi * us / 250) ^ 2;
-    else if (us <= 350) r = 480;
-    else if (us <= 450) r = 480 * cos(pi * (us - 350) / 200) ^ 2;
-    else r = 0;
-    if (i > 0) e += 0.5 * (r + r_prev) * dt;
-    r_prev = r;
-    s = rho * c * L * r / 2 + D * e;
-    if (us > 450) { if (us == 451) s450 = s_last; s = s450 * (550 - us) / 100 }
-    s_last = s;
-    printf "%.6e,%.6e\n", t, s;
-  }
-}'
+RATE=480 exec "$(cd "$(dirname "$0")" && pwd)/../chapter2/make_song_pulse_rate.sh"
