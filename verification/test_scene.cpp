@@ -62,6 +62,7 @@ class SceneTest : public ::testing::Test {
     fs::create_directories(dir_);
     write("pulse.csv", "# reconstructed pulse\ntime_s,stress_pa\n0 0\n1e-4 1e8\n2e-4 0\n");
     write("curve.csv", "strain,stress_pa\n0,0\n0.05,20e6\n0.1,100e6\n");
+    write("psd.csv", "diameter_m,percent_passing\n1e-4,0\n3e-4,50\n6e-4,100\n");
   }
   void TearDown() override { fs::remove_all(dir_); }
 
@@ -94,6 +95,8 @@ class SceneTest : public ::testing::Test {
     if (selector == "specimen.model" && value == "compaction")
       j["specimen"] = {
           {"model", "compaction"}, {"loading_curve", "curve.csv"}, {"unloading_modulus", 1e9}};
+    if (selector == "specimen.model" && value == "dem")
+      j["specimen"] = {{"model", "dem"}, {"grain_size_curve", "psd.csv"}};
     if (selector == "specimen.model" && value == "fe")  // K_u >= the curve's steepest slope
       j["specimen"] = {{"model", "fe"}, {"loading_curve", "curve.csv"}, {"unloading_modulus", 2e9}};
     return j;
@@ -154,6 +157,7 @@ TEST_F(SceneTest, EveryParameterIsAccepted) {
                                                {"specimen.model", "elastic"},
                                                {"specimen.constrained_modulus", 230e6},
                                                {"specimen.loading_curve", "curve.csv"},
+                                               {"specimen.grain_size_curve", "psd.csv"},
                                                {"specimen.unloading_modulus", 2e9},
                                                {"time.end", 1e-3},
                                                {"incident.gauge_distance", 0.5},

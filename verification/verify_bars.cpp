@@ -18,4 +18,8 @@ TEST(VerifyFeCoupling, EnergyAndConfinedModulus) {
   for (const auto& c : fe_coupling_checks()) EXPECT_TRUE(c.pass()) << c;
 }
 
+TEST(VerifyDemCoupling, EnergyBalance) {
+  for (const auto& c : dem_coupling_checks()) EXPECT_TRUE(c.pass()) << c;
+}
+
 }  // namespace kolsky::verify

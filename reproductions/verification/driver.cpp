@@ -29,7 +29,7 @@ int main(int argc, char** argv) {
   const auto start = std::chrono::steady_clock::now();
   std::vector<verify::CheckResult> checks;
   for (auto group : {verify::bar_checks, verify::specimen_checks, verify::analysis_checks,
-                     verify::fe_coupling_checks})
+                     verify::fe_coupling_checks, verify::dem_coupling_checks})
     for (auto& c : group()) checks.push_back(std::move(c));
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 

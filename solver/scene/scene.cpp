@@ -5,7 +5,9 @@
 #include "scene/scene.hpp"
 
 #include <algorithm>
+#include <cstdint>
 #include <filesystem>
+#include <stdexcept>
 
 #include "bar/material.hpp"
 #include "core/errors.hpp"
@@ -156,9 +158,39 @@ fe::FeSpecimenParams read_fe_specimen(JsonReader& r, const std::string& base_dir
   return f;
 }
 
+dem::DemSpecimenParams read_dem_specimen(JsonReader& r, const std::string& base_dir) {
+  dem::DemSpecimenParams d;
+  const std::string csv = resolve_csv(r, "specimen.grain_size_curve", base_dir);
+  const CsvColumns c = read_two_column_csv(csv, "diameter_m", "percent_passing");
+  psd::GrainSizeCurve curve{c.x, c.y};
+  try {
+    curve.validate();
+  } catch (const std::invalid_argument& e) {
+    throw InputError(csv, "", e.what());
+  }
+  d.packing.curve = psd::upscale(curve, r.number("specimen.upscale"));
+  d.packing.porosity = r.number("specimen.porosity");
+  d.packing.diameter = r.number("specimen.diameter");
+  d.packing.length = r.number("specimen.length");
+  d.packing.seed = static_cast<std::uint64_t>(r.integer("specimen.seed"));
+  const double g = r.number("specimen.grain_shear_modulus");
+  const double nu = r.number("specimen.grain_poisson_ratio");
+  d.packing.material = dem::Material{2.0 * g * (1.0 + nu), nu, r.number("specimen.grain_density")};
+  d.contact.friction = r.number("specimen.grain_friction");
+  d.contact.restitution = r.number("specimen.restitution");
+  d.options.rolling.factor_per_reference_step = r.number("specimen.rolling_factor");
+  const auto wall = dem::linear_spring(r.number("specimen.wall_normal_stiffness"),
+                                       r.number("specimen.wall_shear_stiffness"),
+                                       r.number("specimen.wall_friction"));
+  d.walls.end_law = wall;
+  d.walls.tube_law = wall;
+  return d;
+}
+
 shpb::SpecimenSpec read_specimen(JsonReader& r, const std::string& base_dir) {
   const std::string model = r.text("specimen.model");
   if (model == "fe") return read_fe_specimen(r, base_dir);
+  if (model == "dem") return read_dem_specimen(r, base_dir);
   bar::ColumnParams c;
   c.length = r.number("specimen.length");
   c.diameter = r.number("specimen.diameter");

@@ -12,6 +12,7 @@
 #include "bar/material.hpp"
 #include "bar/pulse.hpp"
 #include "bar/specimen_column.hpp"
+#include "dem/dem_specimen_params.hpp"
 #include "fe/fe_specimen.hpp"
 #include "shpb/analysis.hpp"
 #include "shpb/experiment.hpp"
@@ -33,6 +34,7 @@ const Range kHalfOpenUnitLower{0.0, 1.0, false, true};  // [0, 1)
 const Range kElementCount{2.0, 100000.0, false, false};
 const Range kMeshCount{1.0, 1000.0, false, false};
 const Range kFrictionAngle{0.0, 90.0, false, true};  // [0, 90) degrees
+const Range kUnitClosed{0.0, 1.0, false, false};     // [0, 1]
 // Below 4 balls a chain is no longer a wave guide: incident and reflected waves overlap at
 // every ball, so there is nothing for a gauge to separate.
 const Range kSphereCount{4.0, kInf, false, false, true};
@@ -162,12 +164,14 @@ std::vector<ParamSpec> build_table() {
 
   const bar::ColumnParams col;
   s.add(VT::choice, "specimen.model", kRequired, "-", kNoRange,
-        "Specimen model: 1-D column (elastic or compaction) or axisymmetric FE (fe, Sec. 2.3)",
-        "", {"elastic", "compaction", "fe"});
+        "Specimen model: 1-D column (elastic or compaction), axisymmetric FE (fe, Sec. 2.3) or "
+        "DEM packing (dem, Sec. 4.3)",
+        "", {"elastic", "compaction", "fe", "dem"});
   s.add(VT::number, "specimen.length", col.length, "m", kPositive, "Specimen length L_s");
   s.add(VT::number, "specimen.diameter", col.diameter, "m", kPositive,
         "Specimen diameter, at most 4 x the bar diameter");
-  s.add(VT::number, "specimen.density", col.density, "kg/m^3", kPositive, "Specimen density");
+  s.add(VT::number, "specimen.density", col.density, "kg/m^3", kPositive, "Specimen density",
+        "specimen.model=elastic|compaction|fe");
   s.add(VT::integer, "specimen.n_elements", col.n_elements, "-", kElementCount,
         "Two-node elements along the specimen", "specimen.model=elastic|compaction");
   s.add(VT::number, "specimen.constrained_modulus", kRequired, "Pa", kPositive,
@@ -213,6 +217,36 @@ std::vector<ParamSpec> build_table() {
         "Contact penalty stiffness factor (docs/fe.md)", "specimen.model=fe");
   s.add(VT::number, "specimen.contact_damping", fep.contact_damping, "-", kNonNegative,
         "Normal contact damping, fraction of critical (docs/fe.md)", "specimen.model=fe");
+  const dem::PackingParams pack;
+  const dem::HertzMindlinParams hm;
+  const dem::Material grain;
+  s.add(VT::path, "specimen.grain_size_curve", kRequired, "path", kNoRange,
+        "CSV table diameter_m,percent_passing (by mass), before upscaling", "specimen.model=dem");
+  s.add(VT::number, "specimen.upscale", 1.0, "-", kPositive,
+        "Upscaling factor N: every grain size times N (Sec. 4.3, Ch. 5)", "specimen.model=dem");
+  s.add(VT::number, "specimen.porosity", pack.porosity, "-", kOpenUnit,
+        "Target porosity of the packing (Sec. 4.3: 0.44)", "specimen.model=dem");
+  s.add(VT::integer, "specimen.seed", static_cast<int>(pack.seed), "-", kNonNegative,
+        "Seed of the grain sampling and placement", "specimen.model=dem");
+  s.add(VT::number, "specimen.grain_shear_modulus", grain.shear_modulus(), "Pa", kPositive,
+        "Grain shear modulus G (Table 4.1: 30 GPa)", "specimen.model=dem");
+  s.add(VT::number, "specimen.grain_poisson_ratio", grain.poisson_ratio, "-", kPoisson,
+        "Grain Poisson ratio (Table 4.1: 0.3)", "specimen.model=dem");
+  s.add(VT::number, "specimen.grain_density", grain.density, "kg/m^3", kPositive,
+        "Grain density (G_s = 2.65)", "specimen.model=dem");
+  s.add(VT::number, "specimen.grain_friction", hm.friction, "-", kNonNegative,
+        "Grain-grain Coulomb friction (Table 4.1: 0.5)", "specimen.model=dem");
+  s.add(VT::number, "specimen.restitution", hm.restitution, "-", kHalfOpenUnitUpper,
+        "Grain-grain restitution through viscous damping; 1 = undamped", "specimen.model=dem");
+  s.add(VT::number, "specimen.rolling_factor", 1.0, "-", kUnitClosed,
+        "Rolling retardation k per 1e-9 s step (Eqs. 4.12-4.14; Sec. 4.3: 0.99999975; 1 = none)",
+        "specimen.model=dem");
+  s.add(VT::number, "specimen.wall_normal_stiffness", 2.6e6, "N/m", kPositive,
+        "Linear wall contact k_n, ends and tube (Table 4.1)", "specimen.model=dem");
+  s.add(VT::number, "specimen.wall_shear_stiffness", 1.6e6, "N/m", kPositive,
+        "Linear wall contact k_s (Table 4.1)", "specimen.model=dem");
+  s.add(VT::number, "specimen.wall_friction", 0.3, "-", kNonNegative,
+        "Wall-grain Coulomb friction (Table 4.1: 0.3)", "specimen.model=dem");
 
   const shpb::TimeSpec time;
   s.add(VT::number, "time.end", kRequired, "s", kPositive, "Simulated time");

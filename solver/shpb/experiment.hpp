@@ -8,6 +8,7 @@
 #include "bar/material.hpp"
 #include "bar/pulse.hpp"
 #include "bar/specimen_column.hpp"
+#include "dem/dem_specimen_params.hpp"
 #include "fe/fe_specimen.hpp"
 
 namespace kolsky::shpb {
@@ -33,8 +34,9 @@ struct OutputSpec {
   double interval = 0.0;  ///< probe sampling interval, s; 0 = every 1 us rounded to steps
 };
 
-/// The specimen between the bars: a 1-D column (bar/) or an axisymmetric FE mesh (fe/).
-using SpecimenSpec = std::variant<bar::ColumnParams, fe::FeSpecimenParams>;
+/// The specimen between the bars: a 1-D column (bar/), an axisymmetric FE mesh (fe/) or a
+/// DEM packing (dem/).
+using SpecimenSpec = std::variant<bar::ColumnParams, fe::FeSpecimenParams, dem::DemSpecimenParams>;
 double specimen_length(const SpecimenSpec& s);    ///< L_s, m
 double specimen_diameter(const SpecimenSpec& s);  ///< m
 

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
-#include <type_traits>
 
 namespace kolsky::shpb {
 
@@ -19,12 +18,12 @@ Bar make_bar(BarKind kind, const BarSpec& b, std::optional<bar::Pulse> load, dou
 }
 
 Specimen make_specimen(const SpecimenSpec& s) {
-  return std::visit([](const auto& p) -> Specimen {
-    if constexpr (std::is_same_v<std::decay_t<decltype(p)>, bar::ColumnParams>)
-      return bar::SpecimenColumn(p);
-    else
-      return fe::FeSpecimen(p);
-  }, s);
+  struct {
+    Specimen operator()(const bar::ColumnParams& p) const { return bar::SpecimenColumn(p); }
+    Specimen operator()(const fe::FeSpecimenParams& p) const { return fe::FeSpecimen(p); }
+    Specimen operator()(const dem::DemSpecimenParams& p) const { return dem::make_dem_specimen(p); }
+  } build;
+  return std::visit(build, s);
 }
 
 template <class V>
@@ -43,13 +42,19 @@ time_loop::StepPolicy policy(const TimeSpec& t, const OutputSpec& o) {
 }  // namespace
 
 double specimen_length(const SpecimenSpec& s) {
-  return std::visit([](const auto& p) { return p.length; }, s);
+  struct {
+    double operator()(const bar::ColumnParams& c) const { return c.length; }
+    double operator()(const fe::FeSpecimenParams& f) const { return f.length; }
+    double operator()(const dem::DemSpecimenParams& d) const { return d.packing.length; }
+  } v;
+  return std::visit(v, s);
 }
 
 double specimen_diameter(const SpecimenSpec& s) {
   struct {
     double operator()(const bar::ColumnParams& c) const { return c.diameter; }
     double operator()(const fe::FeSpecimenParams& f) const { return 2.0 * f.radius; }
+    double operator()(const dem::DemSpecimenParams& d) const { return d.packing.diameter; }
   } v;
   return std::visit(v, s);
 }

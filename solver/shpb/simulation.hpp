@@ -39,7 +39,7 @@ struct RunResult {
 };
 
 using Bar = std::variant<bar::CharacteristicBar, bar::SphereChainBar>;
-using Specimen = std::variant<bar::SpecimenColumn, fe::FeSpecimen>;
+using Specimen = std::variant<bar::SpecimenColumn, fe::FeSpecimen, dem::DemSpecimen>;
 
 class SimulatedShpb {
  public:

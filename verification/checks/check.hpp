@@ -42,5 +42,6 @@ std::vector<CheckResult> bar_checks();       // checks_bars.cpp
 std::vector<CheckResult> specimen_checks();  // checks_specimen.cpp
 std::vector<CheckResult> analysis_checks();  // checks_analysis.cpp
 std::vector<CheckResult> fe_coupling_checks();  // checks_fe_coupling.cpp
+std::vector<CheckResult> dem_coupling_checks();  // checks_dem_coupling.cpp
 
 }  // namespace kolsky::verify
