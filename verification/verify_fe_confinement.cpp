@@ -160,10 +160,7 @@ TEST(VerifyFeConfinement, PseudoTensorSpecimenFollowsTheUniaxialStrainLaw) {
   FeSpecimenParams p;
   p.n_r = 8;
   p.n_z = 8;
-  PseudoTensorModeI sand;
-  sand.eos.loading.x = {0.0, 0.05, 0.10, 0.20};
-  sand.eos.loading.y = {0.0, 7.25e6, 18e6, 60e6};  // initial slope K = 145 MPa (Sec. 2.3.4)
-  sand.eos.unloading_bulk_modulus = 2e9;
+  const PseudoTensorModeI sand = verify::sand_like();  // initial slope K = 145 MPa (Sec. 2.3.4)
   p.material = sand;
   p.tube = RigidTube{};
   FeSpecimen s(p);

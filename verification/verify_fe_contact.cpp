@@ -74,11 +74,7 @@ TEST(VerifyFeContact, DynamicCompactionPenetrationBoundedAndEnergyCloses) {
   FeSpecimenParams p;
   p.n_r = 10;
   p.n_z = 10;
-  PseudoTensorModeI sand;
-  sand.eos.loading.x = {0.0, 0.05, 0.10, 0.20};
-  sand.eos.loading.y = {0.0, 7.25e6, 18e6, 60e6};
-  sand.eos.unloading_bulk_modulus = 2e9;
-  p.material = sand;
+  p.material = verify::sand_like();
   p.tube = RigidTube{};
   p.friction_faces = p.friction_tube = 0.2;  // Sec. 2.4.2
   FeSpecimen s(p);

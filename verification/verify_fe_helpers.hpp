@@ -10,6 +10,16 @@
 
 namespace kolsky::fe::verify {
 
+/// Pseudo-tensor sand (Sec. 2.3.2 defaults) with a stiffening compaction EOS of the magnitude of
+/// Sec. 2.3.4 (initial bulk slope 145 MPa); K_u = 2 GPa exceeds every loading slope.
+inline PseudoTensorModeI sand_like() {
+  PseudoTensorModeI sand;
+  sand.eos.loading.x = {0.0, 0.05, 0.10, 0.20};
+  sand.eos.loading.y = {0.0, 7.25e6, 18e6, 60e6};
+  sand.eos.unloading_bulk_modulus = 2e9;
+  return sand;
+}
+
 /// 0 -> 1 over [0, 1] with zero slope at both ends.
 inline double smoothstep(double s) {
   if (s <= 0.0) return 0.0;

@@ -22,14 +22,6 @@ namespace {
 
 constexpr double kPi = std::numbers::pi;
 
-PseudoTensorModeI sand() {
-  PseudoTensorModeI m;
-  m.eos.loading.x = {0.0, 0.05, 0.10, 0.20};
-  m.eos.loading.y = {0.0, 7.25e6, 18e6, 60e6};
-  m.eos.unloading_bulk_modulus = 2e9;
-  return m;
-}
-
 FeSpecimenParams small_elastic() {
   FeSpecimenParams p;
   p.n_r = 6;
@@ -67,7 +59,7 @@ double free_run(FeSpecimen& s, double dt, long n, const FaceState& faces = {}) {
 TEST(VerifyFeStability, FormulaLiesBelowTheExactCriticalStep) {
   FeSpecimenParams a = small_elastic();
   FeSpecimenParams b = small_elastic();
-  b.material = sand();
+  b.material = verify::sand_like();
   b.tube = MeshedTube{LinearElastic{200e9, 0.33, 8100}, 5e-3, 20e-3, 2, 12};
   b.friction_faces = b.friction_tube = 0.2;
   FeSpecimenParams c = small_elastic();
@@ -75,7 +67,7 @@ TEST(VerifyFeStability, FormulaLiesBelowTheExactCriticalStep) {
   c.n_r = 10;
   c.n_z = 5;
   FeSpecimenParams d = small_elastic();
-  d.material = sand();
+  d.material = verify::sand_like();
   d.tube = SpringTube{LinearElastic{1.4e9, 0.3, 1500}, 5e-3};
   int i = 0;
   for (const auto& p : {a, b, c, d}) {
@@ -154,7 +146,7 @@ TEST(VerifyFeStability, ThreadCountDoesNotChangeResults) {
   FeSpecimenParams p;
   p.n_r = 12;
   p.n_z = 12;
-  p.material = sand();
+  p.material = verify::sand_like();
   p.friction_faces = p.friction_tube = 0.2;
   p.tube = MeshedTube{LinearElastic{1.4e9, 0.3, 1500}, 5e-3, 20e-3, 2, 20};
   auto run = [&](int threads) {
