@@ -1,16 +1,22 @@
-// `kolsky run SCENE.json [-o OUT.h5] [--threads N] [--quiet]`
+// `kolsky run SCENE.json [-o OUT.h5] [--threads N] [--quiet] [--checkpoint-every S
+//  [--checkpoint-file CK.h5]] [--restart CK.h5]`
 #include <omp.h>
 
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
+#include <optional>
 
 #include "app/commands.hpp"
 #include "app/summary.hpp"
 #include "core/progress.hpp"
+#include "io/checkpoint_hdf5.hpp"
 #include "io/csv.hpp"
 #include "io/hdf5_run.hpp"
+#include "io/snapshots.hpp"
 #include "scene/scene.hpp"
 #include "shpb/simulation.hpp"
 
@@ -48,10 +54,41 @@ io::RunRecord to_record(const scene::Scene& sc, const shpb::RunResult& r,
   return rec;
 }
 
+/// A restart must continue the same physics and probe cadence; only time.end (to run further)
+/// and output.snapshot_interval (no effect on the state) may change. Throws InputError naming
+/// the checkpoint and the first key that differs.
+void check_same_scene(const std::string& checkpoint, const nlohmann::json& saved,
+                      const nlohmann::json& current) {
+  auto without_end = [](nlohmann::json j) {
+    if (j.is_object() && j.contains("time") && j["time"].is_object()) j["time"].erase("end");
+    if (j.is_object() && j.contains("output") && j["output"].is_object())
+      j["output"].erase("snapshot_interval");
+    return j;
+  };
+  const nlohmann::json patch = nlohmann::json::diff(without_end(saved), without_end(current));
+  if (patch.empty()) return;
+  std::string key = patch[0].value("path", std::string());
+  std::replace(key.begin(), key.end(), '/', '.');
+  if (!key.empty() && key[0] == '.') key.erase(0, 1);
+  throw InputError(checkpoint, "scene",
+                   "the checkpoint was written for another scene (" +
+                       (key.empty() ? std::string("scene") : key) +
+                       " differs); only time.end and output.snapshot_interval may change on a "
+                       "restart");
+}
+
+/// Steps per interval of `seconds`, at least 1 (the probe cadence rounds the same way).
+long steps_per(double seconds, double dt) {
+  return std::max(1L, static_cast<long>(std::lround(seconds / dt)));
+}
+
 }  // namespace
 
 int cmd_run(const std::vector<std::string>& args) {
-  const Options o = parse_options(args, {"-o", "--threads", "--quiet", "--gauges-csv"});
+  const Options o = parse_options(args, {"-o", "--threads", "--quiet", "--gauges-csv",
+                                         "--checkpoint-every", "--checkpoint-file", "--restart"});
+  if (!o.checkpoint_file.empty() && o.checkpoint_every <= 0)
+    throw UsageError("--checkpoint-file needs --checkpoint-every");
   if (o.positional.size() != 1) throw UsageError("needs exactly one SCENE.json");
   const std::string& file = o.positional[0];
   if (o.threads > 0) omp_set_num_threads(o.threads);
@@ -69,16 +106,57 @@ int cmd_run(const std::vector<std::string>& args) {
     std::fprintf(stderr, "kolsky run: %s: %ld steps of %.4g s (stable limit %.4g s)\n",
                  file.c_str(), sim->schedule().n_steps, sim->schedule().dt,
                  sim->schedule().stable_dt);
+
+  // Checkpoint, restart and particle snapshots: hooks of the run loop (shpb::RunControl).
+  shpb::RunControl control;
+  std::optional<io::Checkpoint> resume;
+  if (!o.restart.empty()) {
+    resume = io::read_checkpoint_hdf5(o.restart);
+    check_same_scene(o.restart, resume->meta.value("scene", nlohmann::json()), sc.resolved);
+    control.resume = &resume->state;
+  }
+  const std::string ck_file = !o.checkpoint_file.empty() ? o.checkpoint_file
+      : (std::filesystem::path(out).parent_path() / std::filesystem::path(out).stem()).string() +
+            ".ckpt.h5";
+  nlohmann::json ck_meta = {{"scene", sc.resolved}, {"scene_file", sc.file},
+                            {"git_commit", KOLSKY_GIT_SHA}, {"kolsky_version", KOLSKY_VERSION}};
+  if (o.checkpoint_every > 0) {
+    if (!sim->can_checkpoint())
+      throw InputError(file, "specimen.model",
+                       "--checkpoint-every: checkpoints are not available for the fe specimen");
+    control.checkpoint_every = steps_per(o.checkpoint_every, sim->schedule().dt);
+    control.checkpoint = [&](const shpb::ShpbState& s) {
+      io::write_checkpoint_hdf5(ck_file, {ck_meta, s});
+    };
+  }
+  std::unique_ptr<io::SnapshotWriter> snapshots;
+  if (sc.spec.output.snapshot_interval > 0) {
+    const auto [h5, xmf] = io::snapshot_paths(out);
+    snapshots = std::make_unique<io::SnapshotWriter>(h5, xmf);
+    control.snapshot_every = steps_per(sc.spec.output.snapshot_interval, sim->schedule().dt);
+    control.snapshot = [&](long n, double t, const dem::Particles& p) { snapshots->add(n, t, p); };
+  }
+
   Progress progress(sc.spec.time.end_time, !o.quiet && stderr_is_terminal(), "kolsky run ");
   const auto start = std::chrono::steady_clock::now();
-  const shpb::RunResult r = sim->run(&progress);
+  shpb::RunResult r;
+  try {
+    r = sim->run(&progress, control);
+  } catch (const InputError& e) {  // a checkpoint that does not fit names the checkpoint
+    const bool from_checkpoint = resume && e.path() != "specimen.model";
+    throw InputError(from_checkpoint ? o.restart : file, e.path(), e.rule());
+  }
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
   const auto setup = sim->analysis_setup();
   const auto waves = r.face_waves(setup.incident.youngs_modulus, setup.transmission.youngs_modulus);
   const auto h = shpb::analyze(waves, setup);
   const auto summary = summarize(waves, h);
-  io::write_run_hdf5(out, to_record(sc, r, h, summary));
+  io::RunRecord rec = to_record(sc, r, h, summary);
+  if (resume) rec.meta["restarted_from"] = o.restart;
+  if (snapshots) rec.meta["snapshots"] = io::snapshot_paths(out).first;
+  io::write_run_hdf5(out, rec);
+  if (snapshots) snapshots->finish(r.complete);  // kept, marked complete = 0, after a blow-up
   if (!o.gauges_csv.empty()) {
     // The first gauge of each bar, in the input format of `kolsky analyze`.
     io::CsvTable g;

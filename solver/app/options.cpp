@@ -21,6 +21,17 @@ Options parse_options(const std::vector<std::string>& args, const std::vector<st
       if (a == "-o") o.output = v;
       else if (a == "--bars") o.bars = v;
       else if (a == "--gauges-csv") o.gauges_csv = v;
+      else if (a == "--checkpoint-file") o.checkpoint_file = v;
+      else if (a == "--restart") o.restart = v;
+      else if (a == "--checkpoint-every") {
+        try {
+          size_t used = 0;
+          o.checkpoint_every = std::stod(v, &used);
+          if (used != v.size() || !(o.checkpoint_every > 0)) throw std::invalid_argument(v);
+        } catch (const std::exception&) {
+          throw UsageError("--checkpoint-every needs a time in s > 0, got '" + v + "'");
+        }
+      }
       else if (a == "--threads") {
         try {
           size_t used = 0;

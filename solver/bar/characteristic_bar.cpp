@@ -60,6 +60,21 @@ double CharacteristicBar::gauge_stress(double distance, double t) const {
   return incoming(t + to_face) + outgoing(t - to_face);
 }
 
+CharacteristicBar::State CharacteristicBar::save_state() const {
+  return {intrusion_, rate_half_, rate_step_, s_in_step_, dt_, delivered_, power_prev_, s_out_};
+}
+
+void CharacteristicBar::restore_state(const State& s) {
+  intrusion_ = s.intrusion;
+  rate_half_ = s.rate_half;
+  rate_step_ = s.rate_step;
+  s_in_step_ = s.s_in_step;
+  dt_ = s.dt;
+  delivered_ = s.delivered;
+  power_prev_ = s.power_prev;
+  s_out_ = s.s_out;
+}
+
 double CharacteristicBar::stable_dt() const { return std::numeric_limits<double>::infinity(); }
 
 bool CharacteristicBar::finite() const {

@@ -43,6 +43,16 @@ class CharacteristicBar {
   const BarMaterial& material() const { return m_; }
   const BarGeometry& geometry() const { return g_; }
 
+  /// Checkpoint/restart: everything step() carries from one step to the next, including the
+  /// whole outgoing-wave history (the far-end reflection and the gauges read it back).
+  struct State {
+    double intrusion = 0, rate_half = 0, rate_step = 0, s_in_step = 0, dt = 0;
+    double delivered = 0, power_prev = 0;
+    std::vector<double> s_out;
+  };
+  State save_state() const;
+  void restore_state(const State& s);
+
  private:
   double incoming(double t) const;
   double outgoing(double t) const;  // s_out history, zero before t = 0

@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <string>
+
+#include "core/errors.hpp"
 
 namespace kolsky::bar {
 
@@ -96,6 +99,30 @@ bool SpecimenColumn::finite() const {
   for (double s : stress_)
     if (!std::isfinite(s)) return false;
   return true;
+}
+
+}  // namespace kolsky::bar
+
+namespace kolsky::bar {
+
+SpecimenColumn::State SpecimenColumn::save_state() const {
+  return {u_, v_, strain_, stress_, max_strain_, work_, kinetic_interior_};
+}
+
+void SpecimenColumn::restore_state(const State& s) {
+  const size_t nodes = u_.size(), elements = strain_.size();
+  if (s.u.size() != nodes || s.v.size() != nodes || s.strain.size() != elements ||
+      s.stress.size() != elements || s.max_strain.size() != elements ||
+      s.work.size() != elements)
+    throw InputError("", "specimen.state", "the state has another element count than the column (" +
+                                               std::to_string(elements) + " elements)");
+  u_ = s.u;
+  v_ = s.v;
+  strain_ = s.strain;
+  stress_ = s.stress;
+  max_strain_ = s.max_strain;
+  work_ = s.work;
+  kinetic_interior_ = s.kinetic_interior;
 }
 
 }  // namespace kolsky::bar

@@ -67,6 +67,15 @@ class SpecimenColumn {
   /// Largest finite-value check: false if any state is NaN/Inf.
   bool finite() const;
 
+  /// Checkpoint/restart: node and element state (the face nodes included).
+  struct State {
+    std::vector<double> u, v, strain, stress, max_strain, work;
+    double kinetic_interior = 0;
+  };
+  State save_state() const;
+  /// Throws kolsky::InputError ("specimen.state") when the element count differs.
+  void restore_state(const State& s);
+
  private:
   double stress_of(size_t e, double strain) const;
   ColumnParams p_;

@@ -2,6 +2,9 @@
 
 #include <cmath>
 #include <numbers>
+#include <string>
+
+#include "core/errors.hpp"
 
 namespace kolsky::bar {
 
@@ -39,6 +42,25 @@ void SphereChainBar::step(double t, double dt, double specimen_force) {
   if (!first_step_) applied_work_ += 0.5 * dt * (power_prev_ + power);
   power_prev_ = power;
   first_step_ = false;
+}
+
+SphereChainBar::State SphereChainBar::save_state() const {
+  return {d_, v_, v_prev_, f_contact_, face_rate_step_, applied_work_, power_prev_, first_step_};
+}
+
+void SphereChainBar::restore_state(const State& s) {
+  const size_t n = d_.size();
+  if (s.d.size() != n || s.v.size() != n || s.v_prev.size() != n || s.f_contact.size() + 1 != n)
+    throw InputError("", "bars.state", "the state has another ball count than the chain (" +
+                                           std::to_string(n) + " balls)");
+  d_ = s.d;
+  v_ = s.v;
+  v_prev_ = s.v_prev;
+  f_contact_ = s.f_contact;
+  face_rate_step_ = s.face_rate_step;
+  applied_work_ = s.applied_work;
+  power_prev_ = s.power_prev;
+  first_step_ = s.first_step;
 }
 
 double SphereChainBar::incoming_at_step() const {

@@ -48,6 +48,16 @@ class SphereChainBar {
   const BarMaterial& material() const { return m_; }
   const BarGeometry& geometry() const { return g_; }
 
+  /// Checkpoint/restart: the balls' state and the work/power bookkeeping.
+  struct State {
+    std::vector<double> d, v, v_prev, f_contact;
+    double face_rate_step = 0, applied_work = 0, power_prev = 0;
+    bool first_step = true;
+  };
+  State save_state() const;
+  /// Throws kolsky::InputError ("bars.state") when the ball count differs.
+  void restore_state(const State& s);
+
  private:
   BarMaterial m_;
   BarGeometry g_;

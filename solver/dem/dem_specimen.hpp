@@ -13,6 +13,8 @@
 
 namespace kolsky::dem {
 
+struct DemSpecimenState;  // dem_state.hpp: checkpoint/restart state
+
 /// Walls of the specimen. Defaults: the Table 4.1 linear wall contact (k_n = 2.6e6 N/m,
 /// k_s = 1.6e6 N/m, friction 0.3) on both ends and the tube; a rigid tube.
 struct SpecimenWalls {
@@ -47,6 +49,11 @@ class DemSpecimen {
   const DemSystem& system() const { return sys_; }
   int front_plane() const { return front_; }
   int back_plane() const { return back_; }
+
+  /// Checkpoint and restart (dem_state.hpp; defined in dem_state.cpp); restore_state needs a
+  /// specimen built from the same parameters.
+  DemSpecimenState save_state() const;
+  void restore_state(const DemSpecimenState& s);
 
  private:
   SpecimenWalls walls_;

@@ -16,6 +16,8 @@
 
 namespace kolsky::dem {
 
+struct DemState;  // dem_state.hpp: checkpoint/restart state
+
 /// Rotational resistance by angular-velocity retardation, Eqs. 4.12-4.14.
 struct RollingRetardation {
   double factor_per_reference_step = 1.0;  ///< k_lambda^zeta per reference step (1: none), -
@@ -91,6 +93,12 @@ class DemSystem {
   std::size_t n_rebuilds() const { return n_rebuilds_; }
   double skin() const { return skin_; }
   bool finite() const;
+
+  /// Checkpoint and restart (dem_state.hpp; defined in dem_state.cpp). restore_state needs a
+  /// system built the same way (same particle count, walls); it throws kolsky::InputError
+  /// ("dem.state") when the counts disagree. The continued run is bitwise the uninterrupted one.
+  DemState save_state() const;
+  void restore_state(const DemState& s);
 
  private:
   // Loops shorter than this run on one thread: a parallel region costs microseconds, which

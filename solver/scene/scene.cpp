@@ -240,6 +240,8 @@ Scene parse_scene(const nlohmann::json& j, const std::string& file, const std::s
                                     " m exceeds 4 x the bar diameter (" + show(bar_d) + " m)");
   e.time = read_time(r);
   e.output.interval = r.number("output.interval");
+  if (std::holds_alternative<dem::DemSpecimenParams>(e.specimen))
+    e.output.snapshot_interval = r.number("output.snapshot_interval");
   r.finish();
   s.resolved = r.resolved();
   return s;

@@ -260,6 +260,11 @@ std::vector<ParamSpec> build_table() {
         "Relative energy growth that counts as a blow-up");
   s.add(VT::number, "output.interval", shpb::OutputSpec{}.interval, "s", kNonNegative,
         "Probe sampling interval; 0 = every 1e-6 s (rounded to whole steps)");
+  s.add(VT::number, "output.snapshot_interval", shpb::OutputSpec{}.snapshot_interval, "s",
+        kNonNegative,
+        "Particle snapshot interval (position, radius, velocity, force in OUT.particles.h5, "
+        "OUT.xmf for ParaView); 0 = none; rounded to whole steps",
+        "specimen.model=dem");
 
   TableBuilder b(rows, "bars");
   add_bars_file_bar(b, "incident");

@@ -32,6 +32,7 @@ struct TimeSpec {
 
 struct OutputSpec {
   double interval = 0.0;  ///< probe sampling interval, s; 0 = every 1 us rounded to steps
+  double snapshot_interval = 0.0;  ///< DEM particle snapshots, s (rounded to steps); 0 = none
 };
 
 /// The specimen between the bars: a 1-D column (bar/), an axisymmetric FE mesh (fe/) or a

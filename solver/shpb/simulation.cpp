@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <type_traits>
 
 namespace kolsky::shpb {
 
@@ -125,6 +126,13 @@ void SimulatedShpb::step(double t, double dt) {
                        rate(transmission_)};
   std::visit([&](auto& sp) {
     forces_ = sp.forces(faces);
+    // Snapshot here, between the force evaluation and the next half kick and drift: the only
+    // point where positions, velocities and forces all belong to t^n.
+    if constexpr (std::is_same_v<std::decay_t<decltype(sp)>, dem::DemSpecimen>) {
+      const RunControl* c = control_;
+      if (c && c->snapshot && c->snapshot_every > 0 && step_index_ % c->snapshot_every == 0)
+        c->snapshot(step_index_, t, sp.system().particles());
+    }
     sp.advance(dt);
   }, specimen_);
   std::visit([&](auto& b) { b.step(t, dt, forces_.front); }, incident_);
@@ -189,11 +197,23 @@ void SimulatedShpb::sample(double t, RunResult& r) {
   for (double d : spec_.transmission.gauges)
     v.push_back(-std::visit([&](const auto& b) { return b.gauge_stress(d, t); }, transmission_) /
                 mt.youngs_modulus);
+  if (const auto* d = std::get_if<dem::DemSpecimen>(&specimen_)) {
+    // Contact counts cost a pass over the contact flags: sampled here, at the probe cadence.
+    const dem::DemSystem& sys = d->system();
+    const double n = static_cast<double>(sys.particles().size());
+    const double pairs = static_cast<double>(sys.n_contacts());
+    const double walls = static_cast<double>(sys.n_wall_contacts());
+    v.push_back(sys.particles().kinetic_energy());
+    v.push_back(2.0 * pairs / n);
+    v.push_back((2.0 * pairs + walls) / n);
+    v.push_back(pairs);
+    v.push_back(walls);
+  }
   r.t.push_back(t);
   for (size_t k = 0; k < v.size(); ++k) r.probes[k].value.push_back(v[k]);
 }
 
-RunResult SimulatedShpb::run(Progress* progress) {
+RunResult SimulatedShpb::run(Progress* progress, const RunControl& control) {
   RunResult r;
   r.dt = schedule_.dt;
   r.stable_dt = schedule_.stable_dt;
@@ -220,15 +240,42 @@ RunResult SimulatedShpb::run(Progress* progress) {
   for (size_t k = 0; k < spec_.transmission.gauges.size(); ++k)
     r.probes.push_back({k == 0 ? "transmission_gauge_strain" : "transmission_gauge_strain_" + std::to_string(k + 1),
                         "1", "transmission-bar gauge strain as measured (compression -)", {}});
+  if (std::holds_alternative<dem::DemSpecimen>(specimen_)) {
+    r.probes.push_back({"grain_kinetic_energy", "J", "kinetic energy of the grains (translation + rotation)", {}});
+    r.probes.push_back({"coordination_number", "1", "2 x touching grain pairs / grains", {}});
+    r.probes.push_back({"coordination_with_walls", "1", "(2 x touching grain pairs + grain-wall contacts) / grains", {}});
+    r.probes.push_back({"grain_contacts", "1", "touching grain pairs", {}});
+    r.probes.push_back({"wall_contacts", "1", "touching grain-wall contacts (end planes and tube)", {}});
+  }
+  const bool checkpointing = control.checkpoint_every > 0 && control.checkpoint;
+  if ((checkpointing || control.resume) && !can_checkpoint())
+    throw InputError("", "specimen.model", "checkpoint and restart are not available for the fe specimen");
+  long first = 0;
+  if (control.resume) {
+    restore_state(*control.resume, r);
+    first = control.resume->next_step;
+  }
+  control_ = &control;
   try {
-    time_loop::run_loop(
-        schedule_, [this, &r](double t, double dt) { step(t, dt); ++r.steps; },
+    time_loop::run_loop_from(
+        schedule_, first,
+        [&](double t, double dt) {
+          step_index_ = r.steps;  // = n: one step per call since step 0
+          if (checkpointing && r.steps > first && r.steps % control.checkpoint_every == 0)
+            control.checkpoint(save_state(r, r.steps));
+          step(t, dt);
+          ++r.steps;
+        },
         [this, &r](double t) { sample(t, r); }, progress);
   } catch (const NumericalError& e) {
     if (progress) progress->finish();
     r.complete = false;
     r.failure = e.what();
+  } catch (...) {
+    control_ = nullptr;
+    throw;
   }
+  control_ = nullptr;
   return r;
 }
 

@@ -4,7 +4,11 @@
 //   Energy accounting: each bar reports the energy it delivered to its face; the specimen and
 //   face masses hold it. Their difference is the energy-balance error; growth beyond
 //   energy_tolerance * (energy the pulse injected) stops the run as a blow-up (NumericalError).
+//   Checkpoint/restart: ShpbState is everything the loop carries from one step to the next
+//   (bars, specimen, wave-energy accumulators, probes so far); run() can hand it out every k
+//   steps and resume from it, continuing bitwise as the uninterrupted run. Not for fe.
 #pragma once
+#include <functional>
 #include <string>
 #include <variant>
 #include <vector>
@@ -13,6 +17,7 @@
 #include "bar/specimen_column.hpp"
 #include "bar/sphere_chain.hpp"
 #include "core/progress.hpp"
+#include "dem/dem_state.hpp"
 #include "shpb/analysis.hpp"
 #include "shpb/experiment.hpp"
 #include "time/explicit_loop.hpp"
@@ -41,11 +46,42 @@ struct RunResult {
 using Bar = std::variant<bar::CharacteristicBar, bar::SphereChainBar>;
 using Specimen = std::variant<bar::SpecimenColumn, fe::FeSpecimen, dem::DemSpecimen>;
 
+using BarState = std::variant<bar::CharacteristicBar::State, bar::SphereChainBar::State>;
+using SpecimenState = std::variant<bar::SpecimenColumn::State, dem::DemSpecimenState>;
+
+/// The loop's state after step next_step - 1 (and its sample): resume with step next_step.
+struct ShpbState {
+  long next_step = 0;
+  RunResult partial;  ///< t, probes, steps, dt recorded so far
+  BarState incident, transmission;
+  SpecimenState specimen;
+  FaceForces forces;
+  double w_i = 0, w_r = 0, w_t = 0, prev[3] = {0, 0, 0}, injected = 0;
+};
+
+/// Optional hooks of run(). Both are called from the loop's thread.
+struct RunControl {
+  /// Steps between checkpoints (0: none): checkpoint(state) before the steps k, 2k, ...
+  long checkpoint_every = 0;
+  std::function<void(const ShpbState&)> checkpoint;
+  /// Steps between particle snapshots of a DEM specimen (0: none): snapshot(n, t^n, grains)
+  /// at the steps n = 0, k, 2k, ..., with positions, velocities and forces all at t^n.
+  long snapshot_every = 0;
+  std::function<void(long step, double t, const dem::Particles&)> snapshot;
+  /// Continue from this state (a checkpoint of a simulation built from the same spec).
+  const ShpbState* resume = nullptr;
+};
+
 class SimulatedShpb {
  public:
   /// Throws InputError("", "time.dt", ...) when the requested dt exceeds the stable limit.
   explicit SimulatedShpb(const ExperimentSpec& spec);
-  RunResult run(Progress* progress = nullptr);
+  RunResult run(Progress* progress = nullptr) { return run(progress, RunControl{}); }
+  /// Throws InputError("", "specimen.model", ...) when asked to checkpoint or resume an fe
+  /// specimen, InputError("", "restart", ...) for a state that does not fit this simulation.
+  RunResult run(Progress* progress, const RunControl& control);
+  /// Whether the specimen model supports save/restore (all but fe).
+  bool can_checkpoint() const;
   const time_loop::Schedule& schedule() const { return schedule_; }
   /// Incident-wave arrival time at the specimen face, L_I / c_I (s).
   double arrival_time() const;
@@ -57,6 +93,10 @@ class SimulatedShpb {
  private:
   void step(double t, double dt);
   void sample(double t, RunResult& r);
+  ShpbState save_state(const RunResult& r, long next_step) const;
+  void restore_state(const ShpbState& s, RunResult& r);
+  const RunControl* control_ = nullptr;  // during run(): the snapshot hook
+  long step_index_ = 0;
   ExperimentSpec spec_;
   Specimen specimen_;
   Bar incident_, transmission_;

@@ -29,13 +29,15 @@ struct Schedule {
 /// Throws InputError("", "time.dt", ...) for a dt above the stability limit (when checked).
 Schedule plan_steps(const StepPolicy& p, double stable_dt);
 
-/// Runs n_steps steps at t^n = n dt; samples after the steps n = 0, k, 2k, ... (k =
-/// sample_every), i.e. at the times t^n whose state the step just completed. Returns t^n of the
-/// last step.
+/// Runs the steps n = first .. n_steps - 1 at t^n = n dt; samples after the steps n = 0, k,
+/// 2k, ... (k = sample_every), i.e. at the times t^n whose state the step just completed.
+/// Returns t^n of the last step. first > 0 continues a run restored from a checkpoint taken
+/// after step first - 1: the same steps and samples as the uninterrupted run.
 template <class StepFn, class SampleFn>
-double run_loop(const Schedule& s, StepFn&& step, SampleFn&& sample, Progress* progress) {
+double run_loop_from(const Schedule& s, long first, StepFn&& step, SampleFn&& sample,
+                     Progress* progress) {
   double t = 0.0;
-  for (long n = 0; n < s.n_steps; ++n) {
+  for (long n = first; n < s.n_steps; ++n) {
     t = static_cast<double>(n) * s.dt;
     step(t, s.dt);
     if (n % s.sample_every == 0) sample(t);
@@ -43,6 +45,11 @@ double run_loop(const Schedule& s, StepFn&& step, SampleFn&& sample, Progress* p
   }
   if (progress) progress->finish();
   return t;
+}
+
+template <class StepFn, class SampleFn>
+double run_loop(const Schedule& s, StepFn&& step, SampleFn&& sample, Progress* progress) {
+  return run_loop_from(s, 0, step, sample, progress);
 }
 
 }  // namespace kolsky::time_loop

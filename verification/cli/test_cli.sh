@@ -18,6 +18,16 @@ scene() { cat > "$1" <<JSON
 JSON
 }
 
+# A small DEM scene (~250 grains of the reconstructed Song curve x5) between short bars.
+dem_scene() { cat > "$1" <<JSON
+{"bars": {"incident": {"length": 0.6, "gauges": [0.3]}, "transmission": {"length": 0.4, "gauges": [0.2]}},
+ "pulse": {"kind": "trapezoid", "amplitude": 20e6, "rise_time": 40e-6, "duration": 200e-6, "fall_time": 40e-6},
+ "specimen": {"model": "dem", "grain_size_curve": "$repo/data/digitized/chapter4/song2009_psd_reconstructed.csv",
+              "upscale": 5, "seed": 7, "length": 0.006, "diameter": 0.008},
+ "time": {"end": 200e-6}, "output": {"interval": 2e-6 $2}}
+JSON
+}
+
 case "$case_name" in
 help)
   expect_exit 0 "$kolsky" --help; grep -q "kolsky run SCENE.json" out.txt || fail "usage text"
@@ -72,6 +82,46 @@ eos)
   grep -q "^eps_v,p_pa,p_bc_pa,p_d_pa,p_e_pa" e.csv || fail "eos CSV header"
   grep -q "abs_tol" e.csv || fail "ODE tolerances not recorded"
   expect_exit 2 "$kolsky" eos --water 30; grep -q "\-\-water" err.txt || fail "water range message"
+  no_temp_files ;;
+snapshots)
+  dem_scene d.json ', "snapshot_interval": 50e-6'
+  expect_exit 0 "$kolsky" run d.json -o run.h5 --quiet
+  [ -s run.h5 ] && [ -s run.particles.h5 ] && [ -s run.xmf ] || fail "outputs missing: $(ls)"; no_temp_files
+  h5dump -a /meta/complete run.particles.h5 | grep -q "(0): 1" || fail "snapshots not marked complete"
+  h5dump -H -d /snapshots/0/position run.particles.h5 | grep -q "SIMPLE { ( [0-9]*, 3 )" || fail "position not n x 3"
+  h5dump -a /snapshots/1/time run.particles.h5 | grep -q "(0): 4.99" || fail "second snapshot not at 50 us"
+  for k in 0 1 2 3; do grep -q "run.particles.h5:/snapshots/$k/force" run.xmf || fail "xmf lacks snapshot $k"; done
+  grep -q 'AttributeType="Vector"' run.xmf && grep -q 'TopologyType="Polyvertex"' run.xmf || fail "xmf content"
+  for p in grain_kinetic_energy coordination_number coordination_with_walls grain_contacts wall_contacts stress_front stress_back specimen_strain analysis_alpha; do
+    h5dump -H -d /probes/$p/value run.h5 >/dev/null || fail "DEM probe $p missing"; done
+  scene e.json '}, "output": {"snapshot_interval": 1e-6'
+  expect_exit 2 "$kolsky" run e.json -o e.h5
+  grep -q "e.json: output.snapshot_interval: .*only when specimen.model = dem" err.txt || fail "variant message: $(cat err.txt)" ;;
+restart)
+  # Elastic column and DEM specimen: full run vs checkpoint + restart, probes bitwise (h5diff
+  # without a tolerance compares exactly).
+  scene s.json ""
+  expect_exit 0 "$kolsky" run s.json -o full.h5 --quiet
+  expect_exit 0 "$kolsky" run s.json -o part.h5 --quiet --checkpoint-every 0.25e-3 --checkpoint-file ck.h5
+  [ -s ck.h5 ] || fail "no checkpoint written"; no_temp_files
+  expect_exit 0 "$kolsky" run s.json -o again.h5 --quiet --restart ck.h5
+  h5diff full.h5 again.h5 /probes /probes >diff.txt || fail "restarted elastic run differs: $(head -5 diff.txt)"
+  dem_scene d.json ""
+  expect_exit 0 "$kolsky" run d.json -o dfull.h5 --quiet
+  expect_exit 0 "$kolsky" run d.json -o dpart.h5 --quiet --checkpoint-every 70e-6
+  [ -s dpart.ckpt.h5 ] || fail "default checkpoint name dpart.ckpt.h5"
+  expect_exit 0 "$kolsky" run d.json -o dagain.h5 --quiet --restart dpart.ckpt.h5
+  h5diff dfull.h5 dagain.h5 /probes /probes >diff.txt || fail "restarted DEM run differs: $(head -5 diff.txt)"
+  h5dump -a /meta/complete dagain.h5 | grep -q "(0): 1" || fail "restarted run not complete"
+  # Another scene, a non-checkpoint file, an option without its partner.
+  scene other.json ', "dt": 1e-8'
+  expect_exit 2 "$kolsky" run other.json -o o.h5 --restart ck.h5
+  grep -q "ck.h5: scene: .*time.dt differs" err.txt || fail "scene mismatch message: $(cat err.txt)"
+  [ ! -e o.h5 ] || fail "output written for a mismatched restart"
+  expect_exit 2 "$kolsky" run s.json -o o.h5 --restart full.h5
+  grep -q "full.h5: .*not a kolsky checkpoint" err.txt || fail "non-checkpoint message: $(cat err.txt)"
+  expect_exit 1 "$kolsky" run s.json --checkpoint-file x.h5
+  expect_exit 1 "$kolsky" run s.json --checkpoint-every -1
   no_temp_files ;;
 *) fail "unknown case" ;;
 esac

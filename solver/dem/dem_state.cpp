@@ -1,0 +1,147 @@
+// DemSystem / DemSpecimen checkpoint and restart (see dem_state.hpp for what is stored and why
+// the pair lists are rebuilt rather than stored).
+#include "dem/dem_state.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "core/errors.hpp"
+#include "dem/dem_specimen.hpp"
+#include "dem/dem_system.hpp"
+
+namespace kolsky::dem {
+
+namespace {
+
+// Zero histories are not stored (a rebuild starts every new contact at zero). -0.0 is kept:
+// it is not bitwise zero, and the test of this module compares bits.
+bool stored(const Vec3& h) {
+  return h.x != 0 || h.y != 0 || h.z != 0 || std::signbit(h.x) || std::signbit(h.y) ||
+         std::signbit(h.z);
+}
+
+[[noreturn]] void bad_state(const std::string& rule) {
+  throw InputError("", "dem.state", rule);
+}
+
+}  // namespace
+
+DemState DemSystem::save_state() const {
+  DemState s;
+  s.particles = p_;
+  s.dissipated = dissipated_;
+  s.time = time_;
+  s.pending_dt = pending_dt_;
+  s.forces_valid = forces_valid_;
+  s.n_rebuilds = n_rebuilds_;
+  if (pairs_.first.size() == p_.size() + 1) {  // else no list yet (or edited particles)
+    for (std::size_t k = 0; k < pairs_.size(); ++k) {
+      if (!stored(pairs_.history[k])) continue;
+      s.pair_i.push_back(pairs_.i[k]);
+      s.pair_j.push_back(pairs_.j[k]);
+      s.pair_history.push_back(pairs_.history[k]);
+    }
+  }
+  const std::size_t n_slots = planes_.size() + tubes_.size();
+  if (wall_first_.size() == n_slots + 1) {
+    for (std::size_t w = 0; w < n_slots; ++w)
+      for (int c = wall_first_[w]; c < wall_first_[w + 1]; ++c) {
+        if (!stored(wall_history_[c])) continue;
+        s.wall_slot.push_back(static_cast<int>(w));
+        s.wall_particle.push_back(wall_particle_[c]);
+        s.wall_history.push_back(wall_history_[c]);
+      }
+  }
+  for (const auto& p : planes_)
+    s.planes.push_back({p.offset, p.speed, p.force, p.offset_at_force, p.work});
+  for (const auto& t : tubes_) s.tubes.push_back({t.u, t.u_dot, t.force});
+  return s;
+}
+
+void DemSystem::restore_state(const DemState& s) {
+  const std::size_t n = s.particles.size();
+  if (n != p_.size())
+    bad_state("the state has " + std::to_string(n) + " particles, the system " +
+              std::to_string(p_.size()));
+  if (s.planes.size() != planes_.size() || s.tubes.size() != tubes_.size())
+    bad_state("the state has other walls than the system");
+  if (s.dissipated.size() != n) bad_state("dissipated energy: one value per particle needed");
+  validate(s.particles, materials_.size());
+  const std::size_t n_pairs = s.pair_i.size();
+  if (s.pair_j.size() != n_pairs || s.pair_history.size() != n_pairs)
+    bad_state("pair histories: i, j and history differ in length");
+  for (std::size_t k = 0; k < n_pairs; ++k) {
+    const int i = s.pair_i[k], j = s.pair_j[k];
+    const bool ordered = k == 0 || i > s.pair_i[k - 1] || (i == s.pair_i[k - 1] && j > s.pair_j[k - 1]);
+    if (!(i >= 0 && i < j && j < static_cast<int>(n) && ordered))
+      bad_state("pair histories must be sorted pairs i < j of existing particles");
+  }
+  const std::size_t n_slots = planes_.size() + tubes_.size(), n_wall = s.wall_slot.size();
+  if (s.wall_particle.size() != n_wall || s.wall_history.size() != n_wall)
+    bad_state("wall histories: slot, particle and history differ in length");
+  for (std::size_t c = 0; c < n_wall; ++c) {
+    const int w = s.wall_slot[c], q = s.wall_particle[c];
+    const bool ordered = c == 0 || w > s.wall_slot[c - 1] ||
+                         (w == s.wall_slot[c - 1] && q > s.wall_particle[c - 1]);
+    if (!(w >= 0 && w < static_cast<int>(n_slots) && q >= 0 && q < static_cast<int>(n) && ordered))
+      bad_state("wall histories must be sorted by (wall, particle) and name existing ones");
+  }
+
+  p_ = s.particles;
+  dissipated_ = s.dissipated;
+  time_ = s.time;
+  pending_dt_ = s.pending_dt;
+  forces_valid_ = s.forces_valid;
+  n_rebuilds_ = s.n_rebuilds;
+  particles_changed_ = false;
+  skin_ = opt_.skin_over_min_radius * *std::min_element(p_.radius.begin(), p_.radius.end());
+  stable_dt_ = compute_stable_dt();
+  for (std::size_t k = 0; k < planes_.size(); ++k) {
+    const DemState::Plane& q = s.planes[k];
+    PlaneState& p = planes_[k];
+    p.offset = q.offset;
+    p.speed = q.speed;
+    p.force = q.force;
+    p.offset_at_force = q.offset_at_force;
+    p.work = q.work;
+  }
+  for (std::size_t k = 0; k < tubes_.size(); ++k) {
+    tubes_[k].u = s.tubes[k].u;
+    tubes_[k].u_dot = s.tubes[k].u_dot;
+    tubes_[k].force = s.tubes[k].force;
+  }
+
+  // The histories become the "previous" lists of the next rebuild, which carries them by key.
+  PairList old;
+  old.first.assign(n + 1, 0);
+  for (int i : s.pair_i) ++old.first[static_cast<std::size_t>(i) + 1];
+  for (std::size_t q = 0; q < n; ++q) old.first[q + 1] += old.first[q];
+  old.i = s.pair_i;
+  old.j = s.pair_j;
+  old.history = s.pair_history;
+  pairs_ = std::move(old);
+  pair_out_.resize(pairs_.size());  // all inactive until the next evaluation
+  wall_first_.assign(n_slots + 1, 0);
+  for (int w : s.wall_slot) ++wall_first_[static_cast<std::size_t>(w) + 1];
+  for (std::size_t w = 0; w < n_slots; ++w) wall_first_[w + 1] += wall_first_[w];
+  wall_particle_ = s.wall_particle;
+  wall_history_ = s.wall_history;
+  wall_out_.resize(wall_particle_.size());
+  wall_normal_.assign(wall_particle_.size(), 0.0);
+  list_valid_ = false;  // rebuilt (with the carry above) at the next force evaluation
+  max_disp2_ = 0;
+}
+
+DemSpecimenState DemSpecimen::save_state() const {
+  return {sys_.save_state(), faces_, stepping_, elastic_0_};
+}
+
+void DemSpecimen::restore_state(const DemSpecimenState& s) {
+  sys_.restore_state(s.system);
+  faces_ = s.faces;
+  stepping_ = s.stepping;
+  elastic_0_ = s.elastic_0;
+}
+
+}  // namespace kolsky::dem

@@ -1,0 +1,61 @@
+// Plain-struct state of a DemSystem / DemSpecimen for checkpoint and restart (no io here: the
+// io module writes and reads these structs; physics modules never include io).
+//
+// What is stored: everything the kick-drift-kick step reads (particle arrays including the
+// forces and torques of the last evaluation, per-particle dissipated energy, time, the step in
+// progress), the tangential histories of pair and wall contacts keyed by (i, j) and by
+// (wall slot, particle), and the walls' dynamic state. What is not stored: the Verlet pair list
+// and the wall-candidate lists. restore_state() invalidates them, so the next force evaluation
+// rebuilds them from the restored positions and re-attaches the histories by key (the same
+// carry as an ordinary rebuild). The rebuild timing differs from the uninterrupted run, but it
+// cannot change a result: only touching pairs produce forces, every list contains all of them,
+// and all sums run over touching contacts in (owner, partner) / (wall, particle) order, which
+// no list composition changes. verification/test_dem_restart.cpp checks bitwise agreement.
+// Consequence: between restore_state() and the next force evaluation, the per-contact outputs
+// (energy().elastic's contact part, n_contacts(), n_wall_contacts()) read zero.
+#pragma once
+#include <cstddef>
+#include <vector>
+
+#include "core/specimen_coupling.hpp"
+#include "dem/particles.hpp"
+#include "dem/vec3.hpp"
+
+namespace kolsky::dem {
+
+struct DemState {
+  Particles particles;              ///< every field: x, v, omega, f, torque, radius, mass, ...
+  std::vector<double> dissipated;   ///< per particle, J
+  double time = 0;                  ///< s
+  double pending_dt = 0;            ///< > 0: begin_step done, finish_step pending (s)
+  bool forces_valid = false;        ///< particles.f/torque hold the current state's forces
+  std::size_t n_rebuilds = 0;       ///< bookkeeping only (restored, then counts on)
+
+  // Tangential histories of pairs (i < j) with a non-zero history, sorted by (i, j).
+  std::vector<int> pair_i, pair_j;
+  std::vector<Vec3> pair_history;
+  // Tangential histories of wall contacts with a non-zero history: wall slot (planes first,
+  // then cylinders), particle, sorted by (slot, particle).
+  std::vector<int> wall_slot, wall_particle;
+  std::vector<Vec3> wall_history;
+
+  struct Plane {
+    double offset = 0, speed = 0, force = 0, offset_at_force = 0, work = 0;
+  };
+  struct Tube {
+    double u = 0, u_dot = 0, force = 0;
+  };
+  std::vector<Plane> planes;
+  std::vector<Tube> tubes;
+};
+
+/// DemSpecimen = DemSystem + the last face state, whether a step is in progress, and the
+/// elastic energy at construction (the reference of energy().internal_work).
+struct DemSpecimenState {
+  DemState system;
+  FaceState faces;
+  bool stepping = false;
+  double elastic_0 = 0;
+};
+
+}  // namespace kolsky::dem
