@@ -13,17 +13,6 @@ herr_t innermost(unsigned n, const H5E_error2_t* err, void* out) {
   return 0;
 }
 
-[[noreturn]] void fail(const std::string& what) {
-  std::string detail;
-  H5Ewalk2(H5E_DEFAULT, H5E_WALK_UPWARD, innermost, &detail);
-  H5Eclear2(H5E_DEFAULT);
-  throw std::runtime_error(detail.empty() ? what : what + ": " + detail);
-}
-
-void check(herr_t status, const std::string& what) {
-  if (status < 0) fail(what);
-}
-
 Handle scalar_space() { return Handle(H5Screate(H5S_SCALAR), H5Sclose, "scalar dataspace"); }
 
 Handle open_dataset(hid_t loc, const std::string& name, std::vector<hsize_t>& dims) {
@@ -37,6 +26,17 @@ Handle open_dataset(hid_t loc, const std::string& name, std::vector<hsize_t>& di
 }
 
 }  // namespace
+
+[[noreturn]] void fail(const std::string& what) {
+  std::string detail;
+  H5Ewalk2(H5E_DEFAULT, H5E_WALK_UPWARD, innermost, &detail);
+  H5Eclear2(H5E_DEFAULT);
+  throw std::runtime_error(detail.empty() ? what : what + ": " + detail);
+}
+
+void check(herr_t status, const std::string& what) {
+  if (status < 0) fail(what);
+}
 
 Handle::Handle(hid_t id, Closer closer, const std::string& what) : id_(id), closer_(closer) {
   if (id_ < 0) fail(what);

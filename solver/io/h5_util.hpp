@@ -1,7 +1,7 @@
 // Small RAII layer over the serial HDF5 C API for the checkpoint and snapshot files: groups,
 // 1-D and n x k double / int64 datasets, scalar attributes. Every failure throws
-// std::runtime_error with the innermost HDF5 message; callers add the file name. (hdf5_run.cpp
-// keeps its own copy of the handle wrapper: its error texts are tested and stay as they are.)
+// std::runtime_error with the innermost HDF5 message; callers add the file name. Shared by the
+// run files (hdf5_run.cpp), checkpoints and snapshots.
 #pragma once
 #include <hdf5.h>
 
@@ -30,6 +30,11 @@ class Handle {
   hid_t id_ = -1;
   Closer closer_ = nullptr;
 };
+
+/// Throws std::runtime_error("what: <innermost HDF5 message>") and clears the error stack.
+[[noreturn]] void fail(const std::string& what);
+/// fail(what) when status < 0.
+void check(herr_t status, const std::string& what);
 
 /// Switches off HDF5's own error printing (our exceptions carry the message).
 void silence();

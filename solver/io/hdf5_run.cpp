@@ -5,6 +5,7 @@
 #include "io/hdf5_run.hpp"
 
 #include "core/atomic_file.hpp"
+#include "io/h5_util.hpp"
 
 #include <hdf5.h>
 
@@ -26,54 +27,9 @@
 namespace kolsky::io {
 namespace {
 
-/// Internal failure; the public functions turn it into std::runtime_error naming the file.
-struct Hdf5Failure : std::runtime_error {
-  using std::runtime_error::runtime_error;
-};
-
-herr_t collect_innermost(unsigned n, const H5E_error2_t* err, void* out) {
-  // Walking upward, n == 0 is the most specific record (e.g. the errno text of a failed open).
-  if (n == 0 && err != nullptr && err->desc != nullptr) *static_cast<std::string*>(out) = err->desc;
-  return 0;
-}
-
-/// "what: <innermost HDF5 message>", clearing the stack so later calls start clean.
-[[noreturn]] void fail(const std::string& what) {
-  std::string detail;
-  H5Ewalk2(H5E_DEFAULT, H5E_WALK_UPWARD, collect_innermost, &detail);
-  H5Eclear2(H5E_DEFAULT);
-  throw Hdf5Failure(detail.empty() ? what : what + ": " + detail);
-}
-
-void check(herr_t status, const std::string& what) {
-  if (status < 0) fail(what);
-}
-
-/// Owns one hid_t and closes it with the matching H5?close.
-class Handle {
- public:
-  using Closer = herr_t (*)(hid_t);
-  Handle(hid_t id, Closer closer, const std::string& what) : id_(id), closer_(closer) {
-    if (id_ < 0) fail(what);
-  }
-  Handle(const Handle&) = delete;
-  Handle& operator=(const Handle&) = delete;
-  ~Handle() {
-    if (id_ >= 0) closer_(id_);
-  }
-  hid_t get() const { return id_; }
-  /// Explicit close for the file, whose close flushes and can fail (disk full).
-  void close(const std::string& what) {
-    const hid_t id = std::exchange(id_, -1);
-    check(closer_(id), what);
-  }
-
- private:
-  hid_t id_;
-  Closer closer_;
-};
-
-void silence_hdf5() { H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr); }
+using h5::check;
+using h5::fail;
+using h5::Handle;
 
 // ---- writing ----
 
@@ -123,7 +79,7 @@ int meta_complete(const nlohmann::json& meta) {
   if (it == meta.end()) return 0;  // a writer that does not say so has not finished
   if (it->is_boolean()) return it->get<bool>() ? 1 : 0;
   if (it->is_number()) return it->get<double>() != 0.0 ? 1 : 0;
-  throw Hdf5Failure("meta.complete must be a boolean or a number");
+  throw std::runtime_error("meta.complete must be a boolean or a number");
 }
 
 void write_meta(hid_t file, const nlohmann::json& meta) {
@@ -157,14 +113,14 @@ void write_probes(hid_t file, const std::vector<Series>& probes) {
 
 void validate(const RunRecord& rec) {
   if (!rec.meta.is_object() && !rec.meta.is_null())
-    throw Hdf5Failure("meta must be a JSON object");
+    throw std::runtime_error("meta must be a JSON object");
   std::set<std::string> seen;
   for (const Series& s : rec.probes) {
     if (s.name.empty() || s.name == "." || s.name.find('/') != std::string::npos)
-      throw Hdf5Failure("probe name '" + s.name + "' must be non-empty and contain no '/'");
-    if (!seen.insert(s.name).second) throw Hdf5Failure("duplicate probe name '" + s.name + "'");
+      throw std::runtime_error("probe name '" + s.name + "' must be non-empty and contain no '/'");
+    if (!seen.insert(s.name).second) throw std::runtime_error("duplicate probe name '" + s.name + "'");
     if (s.t.size() != s.value.size())
-      throw Hdf5Failure("probe '" + s.name + "': t has " + std::to_string(s.t.size()) +
+      throw std::runtime_error("probe '" + s.name + "': t has " + std::to_string(s.t.size()) +
                         " samples but value has " + std::to_string(s.value.size()));
   }
 }
@@ -177,7 +133,7 @@ std::string read_string_attr(hid_t obj, const std::string& name) {
   Handle attr(H5Aopen(obj, name.c_str(), H5P_DEFAULT), H5Aclose, "open attribute " + name);
   Handle ftype(H5Aget_type(attr.get()), H5Tclose, "type of attribute " + name);
   if (H5Tget_class(ftype.get()) != H5T_STRING)
-    throw Hdf5Failure("attribute " + name + " is not a string");
+    throw std::runtime_error("attribute " + name + " is not a string");
   Handle mtype(H5Tcopy(H5T_C_S1), H5Tclose, "string type");
   check(H5Tset_cset(mtype.get(), H5Tget_cset(ftype.get())), "string type");
   if (H5Tis_variable_str(ftype.get()) > 0) {
@@ -209,7 +165,7 @@ std::vector<double> read_vector(hid_t group, const std::string& name, std::strin
   Handle set(H5Dopen2(group, name.c_str(), H5P_DEFAULT), H5Dclose, "open dataset " + name);
   Handle space(H5Dget_space(set.get()), H5Sclose, "dataspace of " + name);
   if (H5Sget_simple_extent_ndims(space.get()) != 1)
-    throw Hdf5Failure("dataset " + name + " is not one-dimensional");
+    throw std::runtime_error("dataset " + name + " is not one-dimensional");
   const hssize_t n = H5Sget_simple_extent_npoints(space.get());
   if (n < 0) fail("size of dataset " + name);
   std::vector<double> v(static_cast<size_t>(n));
@@ -227,7 +183,7 @@ nlohmann::json read_meta(hid_t file) {
     try {
       return nlohmann::json::parse(text);
     } catch (const nlohmann::json::exception& e) {
-      throw Hdf5Failure(std::string("/meta/meta_json is not valid JSON: ") + e.what());
+      throw std::runtime_error(std::string("/meta/meta_json is not valid JSON: ") + e.what());
     }
   }
   // Older or foreign files: rebuild what the individual attributes carry.
@@ -269,7 +225,7 @@ std::vector<Series> read_probes(hid_t file) {
     s.t = read_vector(g.get(), "t", nullptr);
     s.value = read_vector(g.get(), "value", &s.unit);
     if (s.t.size() != s.value.size())
-      throw Hdf5Failure("probe '" + name + "': t and value differ in length");
+      throw std::runtime_error("probe '" + name + "': t and value differ in length");
     probes.push_back(std::move(s));
   }
   return probes;
@@ -278,7 +234,7 @@ std::vector<Series> read_probes(hid_t file) {
 }  // namespace
 
 void write_run_hdf5(const std::string& path, const RunRecord& rec) {
-  silence_hdf5();
+  h5::silence();
   const std::string tmp = temporary_name(path);
   try {
     validate(rec);
@@ -296,7 +252,7 @@ void write_run_hdf5(const std::string& path, const RunRecord& rec) {
 }
 
 RunRecord read_run_hdf5(const std::string& path) {
-  silence_hdf5();
+  h5::silence();
   try {
     Handle file(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose, "open");
     RunRecord rec;
