@@ -99,6 +99,7 @@ int cmd_run(const std::vector<std::string>& args) {
   std::unique_ptr<shpb::SimulatedShpb> sim;
   try {
     sim = std::make_unique<shpb::SimulatedShpb>(sc.spec);
+    sim->require_analysable_end();
   } catch (const InputError& e) {  // the physics knows the path, the scene knows the file
     throw InputError(file, e.path(), e.rule());
   }

@@ -44,6 +44,9 @@ class DemSpecimen {
   SpecimenEnergy energy() const;
   /// (intrusion_front + intrusion_back) / L of the last forces() call.
   double mean_strain() const;
+  /// Elastic energy stored in the grains' contacts at construction (the packing's residual
+  /// overlaps), J: energy the specimen may release without any work from the faces.
+  double initial_elastic_energy() const { return elastic_0_; }
   bool finite() const { return sys_.finite(); }
 
   const DemSystem& system() const { return sys_; }

@@ -85,6 +85,9 @@ class SimulatedShpb {
   const time_loop::Schedule& schedule() const { return schedule_; }
   /// Incident-wave arrival time at the specimen face, L_I / c_I (s).
   double arrival_time() const;
+  /// Throws InputError("", "time.end", ...) when the run ends before the classic analysis has
+  /// two probe samples after the incident wave's arrival.
+  void require_analysable_end() const;
   AnalysisSetup analysis_setup() const;
   const Specimen& specimen() const { return specimen_; }
   const Bar& incident_bar() const { return incident_; }

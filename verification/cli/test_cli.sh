@@ -55,6 +55,10 @@ bad_input)
   echo '{"bars": ' > broken.json
   expect_exit 2 "$kolsky" run broken.json; grep -q "broken.json.*line" err.txt || fail "syntax error position"
   expect_exit 2 "$kolsky" run missing.json
+  scene s3.json ""; sed -i 's/"end": 0.6e-3/"end": 0.2e-3/' s3.json  # the wave arrives at 0.4 ms
+  expect_exit 2 "$kolsky" run s3.json -o o.h5
+  grep -q "s3.json: time.end: must be at least .* reaches the specimen" err.txt || fail "end message: $(cat err.txt)"
+  [ ! -e o.h5 ] || fail "output written for a run ending before the wave arrives"
   expect_exit 1 "$kolsky" run s.json --threads zero ;;
 blow_up)
   # 1.05 x the column's Courant limit with the check off: the explicit scheme must blow up, be
