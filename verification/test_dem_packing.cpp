@@ -92,6 +92,54 @@ TEST(DemPacking, DeterministicForASeed) {
   EXPECT_TRUE(differs);
 }
 
+// Jamming stage (jam = true): the same porosity, count and curve guarantees (the radii are the
+// sampled ones), plus a frictional contact network. ~1,500 grains; overlap tolerance 5e-3 r_mean
+// (0.5 % of a radius, 1 um here) so the quenched settling stops within the test's budget.
+TEST(DemPacking, JammedPackingHasAFrictionalContactNetwork) {
+  PackingParams in = small_song(0.006, 0.004, 7);
+  in.jam = true;
+  in.overlap_tolerance = 5e-3;
+  in.max_settle_stages = 300;
+  const PackingResult r = generate_packing(in);
+  const double volume = psd::cylinder_volume(in.diameter, in.length);
+  const double d_max = in.curve.d_max();
+  EXPECT_NEAR(r.porosity, 0.44, std::numbers::pi * d_max * d_max * d_max / 12 / volume);
+  EXPECT_NEAR(static_cast<double>(r.count) / r.expected_count, 1.0, 0.05);
+  EXPECT_LE(r.curve_deviation, r.curve_deviation_bound);
+  EXPECT_TRUE(r.settled);
+  EXPECT_LT(r.max_overlap, in.overlap_tolerance);
+  EXPECT_DOUBLE_EQ(r.packing_friction, in.jam_friction);
+  // Frictional jamming: the load-bearing grains (rattlers, < 2 contacts, removed repeatedly)
+  // have between the isostatic counts 4 (mu -> infinity) and 6 (mu = 0); 3.5 leaves room for
+  // the wall layer of a small cylinder (measured 3.8-4.2 on 500-34,000 grains). The loose
+  // frictionless packing has 0.03-0.3 contacts per grain, so Z > 2 (with rattlers) tells the
+  // two apart; rattlers are a minority (measured 30-40 %).
+  EXPECT_GT(r.coordination_no_rattlers, 3.5);
+  EXPECT_LT(r.coordination_no_rattlers, 6.0);
+  EXPECT_GT(r.coordination, 2.0);
+  EXPECT_GE(r.coordination_with_walls, r.coordination);
+  EXPECT_LT(r.rattler_fraction, 0.5);
+  // Residual stress with Hertz contacts at the final overlaps: small against the 10 MPa of the
+  // Ch. 4 comparison (Hertz with overlaps < 5e-3 r gives at most ~1e5 Pa here).
+  EXPECT_GT(r.mean_stress_hertz, 0.0);
+  EXPECT_LT(r.mean_stress_hertz, 2e5);
+}
+
+TEST(DemPacking, JammedPackingIsDeterministic) {
+  PackingParams in = small_song(0.004, 0.003, 11);
+  in.jam = true;
+  in.max_settle_stages = 5;  // determinism does not need convergence
+  const PackingResult a = generate_packing(in), b = generate_packing(in);
+  ASSERT_EQ(a.count, b.count);
+  for (std::size_t i = 0; i < a.count; ++i) {
+    ASSERT_EQ(a.particles.x[i].x, b.particles.x[i].x);
+    ASSERT_EQ(a.particles.x[i].y, b.particles.x[i].y);
+    ASSERT_EQ(a.particles.x[i].z, b.particles.x[i].z);
+  }
+  EXPECT_EQ(a.mean_stress, b.mean_stress);
+  EXPECT_EQ(a.steps, b.steps);
+}
+
 TEST(DemPacking, RefusesBadInput) {
   PackingParams in = small_song(0.004, 0.003, 1);
   in.porosity = 1.0;
@@ -100,6 +148,12 @@ TEST(DemPacking, RefusesBadInput) {
   in.initial_solid_fraction = 0.6;  // above 1 - n
   EXPECT_THROW(generate_packing(in), InputError);
   in = small_song(0.001, 0.003, 1);  // largest grain (1.2 mm) does not fit
+  EXPECT_THROW(generate_packing(in), InputError);
+  in = small_song(0.004, 0.003, 1);
+  in.jam_friction = -0.1;
+  EXPECT_THROW(generate_packing(in), InputError);
+  in = small_song(0.004, 0.003, 1);
+  in.jam_overlap = 0;
   EXPECT_THROW(generate_packing(in), InputError);
 }
 

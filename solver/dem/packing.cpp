@@ -4,8 +4,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <limits>
 #include <numbers>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -86,6 +89,225 @@ double max_packing_overlap(const Particles& p, double diameter, double length) {
   return worst;
 }
 
+
+namespace {
+
+// Contact census of a packing: per-grain contact counts (pairs and walls), the largest
+// overlap, and the trace of the contact virial sum_c f_c l_c with a normal force law
+// f(delta, r_i, r_j) for grain pairs (l = centre distance) and g(delta, r) for the walls
+// (l = r - delta, centre to contact point). Brute force on a cell grid, in index order.
+struct Census {
+  std::vector<int> contacts;  // per grain: touching grains + touching walls
+  std::size_t pairs = 0, walls = 0;
+  double virial = 0;          // sum f l, N m
+};
+
+template <class PairForce, class WallForce>
+Census contact_census(const Particles& p, double diameter, double length, PairForce&& fp,
+                      WallForce&& fw) {
+  Census c;
+  c.contacts.assign(p.size(), 0);
+  if (p.size() == 0) return c;
+  const double R = diameter / 2;
+  double r_max = 0;
+  for (double r : p.radius) r_max = std::max(r_max, r);
+  CellGrid grid(2 * r_max, R, length);
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    const Vec3& x = p.x[i];
+    const double r = p.radius[i];
+    const double gaps[3] = {x.z - r, length - x.z - r, R - std::hypot(x.x, x.y) - r};
+    for (double g : gaps)
+      if (g < 0) {
+        ++c.contacts[i];
+        ++c.walls;
+        c.virial += fw(-g, r) * (r + g);
+      }
+    grid.visit(x, [&](int q) {
+      const double dd = r + p.radius[q];
+      const double dist2 = norm2(p.x[q] - x);
+      if (dist2 < dd * dd) {
+        const double dist = std::sqrt(dist2);
+        ++c.contacts[i];
+        ++c.contacts[q];
+        ++c.pairs;
+        c.virial += fp(dd - dist, r, p.radius[q]) * dist;
+      }
+      return true;
+    });
+    grid.insert(x, static_cast<int>(i));
+  }
+  return c;
+}
+
+// Grains with fewer than two contacts carry no load; removing them can strand others, so the
+// removal is repeated until none is left. Returns (coordination of the rest counting walls,
+// fraction removed).
+std::pair<double, double> without_rattlers(const Particles& p, double diameter, double length) {
+  const std::size_t n = p.size();
+  const double R = diameter / 2;
+  // Contact lists (pairs only; wall contacts as a count).
+  std::vector<std::vector<int>> nb(n);
+  std::vector<int> walls(n, 0);
+  double r_max = 0;
+  for (double r : p.radius) r_max = std::max(r_max, r);
+  CellGrid grid(2 * r_max, R, length);
+  for (std::size_t i = 0; i < n; ++i) {
+    const Vec3& x = p.x[i];
+    const double r = p.radius[i];
+    walls[i] = (x.z < r) + (length - x.z < r) + (R - std::hypot(x.x, x.y) < r);
+    grid.visit(x, [&](int q) {
+      const double dd = r + p.radius[q];
+      if (norm2(p.x[q] - x) < dd * dd) {
+        nb[i].push_back(q);
+        nb[static_cast<std::size_t>(q)].push_back(static_cast<int>(i));
+      }
+      return true;
+    });
+    grid.insert(x, static_cast<int>(i));
+  }
+  std::vector<int> count(n);
+  std::vector<char> gone(n, 0);
+  for (std::size_t i = 0; i < n; ++i) count[i] = static_cast<int>(nb[i].size()) + walls[i];
+  std::vector<int> stack;
+  for (std::size_t i = 0; i < n; ++i)
+    if (count[i] < 2) stack.push_back(static_cast<int>(i)), gone[i] = 1;
+  while (!stack.empty()) {
+    const int i = stack.back();
+    stack.pop_back();
+    for (int q : nb[static_cast<std::size_t>(i)])
+      if (!gone[static_cast<std::size_t>(q)] && --count[static_cast<std::size_t>(q)] < 2) {
+        gone[static_cast<std::size_t>(q)] = 1;
+        stack.push_back(q);
+      }
+  }
+  double sum = 0, kept = 0;
+  for (std::size_t i = 0; i < n; ++i)
+    if (!gone[i]) sum += count[i], kept += 1;
+  return {kept > 0 ? sum / kept : 0.0, n > 0 ? 1.0 - kept / static_cast<double>(n) : 0.0};
+}
+
+// The walls of the packing cylinder with one law.
+void add_packing_walls(DemSystem& sys, double R, double L, const WallLaw& law) {
+  sys.add_cylinder(CylinderWall{0, 0, R, std::nullopt, law});
+  sys.add_plane(PlaneWall{{0, 0, 0}, {0, 0, 1}, FixedPlane{}, law});
+  sys.add_plane(PlaneWall{{0, 0, L}, {0, 0, -1}, FixedPlane{}, law});
+}
+
+// Mean stress (compression +) from the wall forces: (sigma_zz + 2 sigma_rr)/3 with
+// sigma_zz = mean end-plane force / (pi R^2), sigma_rr = tube force / (2 pi R L).
+double wall_mean_stress(const DemSystem& sys, double R, double L) {
+  const double szz = 0.5 * (sys.plane_force(0) + sys.plane_force(1)) / (kPi * R * R);
+  const double srr = sys.cylinder_force(0) / (2 * kPi * R * L);
+  return (szz + 2 * srr) / 3;
+}
+
+void set_scale(Particles& q, const std::vector<double>& target, double scale, double rho,
+               double quench) {
+  for (std::size_t i = 0; i < q.size(); ++i) {
+    set_radius(q, i, scale * target[i], rho);
+    q.v[i] = quench * q.v[i];
+    q.omega[i] = quench * q.omega[i];
+  }
+}
+
+// Loose packing (jam = false): growth and settling with frictionless damped linear contacts.
+void loose_stage(const PackingParams& in, Particles p, const std::vector<double>& target,
+                 double s0, double mean_r, PackingResult& res) {
+  const double R = in.diameter / 2, L = in.length;
+  const std::vector<Material> materials{in.material};
+  // Linear, not Hertz: a Hertz contact softens as the overlap vanishes, so the last overlaps
+  // would relax ever more slowly. The stiffness only sets the time scale (the step follows it).
+  const LinearSpring law = linear_spring(in.material.youngs_modulus * mean_r, 0.0, 0.0,
+                                         in.damping_ratio, 0.0);
+  DemSystem sys(std::move(p), materials, law, DemOptions{});
+  add_packing_walls(sys, R, L, law);
+  // The lightest grain only grows, so the step of the shrunk state stays stable throughout.
+  const double dt = sys.stable_dt();
+  auto stage = [&](double scale) {
+    set_scale(sys.mutable_particles(), target, scale, in.material.density, in.velocity_quench);
+    for (int k = 0; k < in.steps_per_stage; ++k) sys.step(dt);
+    res.steps += in.steps_per_stage;
+    ++res.stages;
+  };
+  for (int g = 1; g <= in.growth_stages; ++g)
+    stage(s0 + (1 - s0) * static_cast<double>(g) / in.growth_stages);
+  double overlap = max_packing_overlap(sys.particles(), in.diameter, L) / mean_r;
+  for (int k = 0; k < in.max_settle_stages && overlap >= in.overlap_tolerance; ++k) {
+    stage(1.0);
+    overlap = max_packing_overlap(sys.particles(), in.diameter, L) / mean_r;
+  }
+  res.settled = overlap < in.overlap_tolerance;
+  res.kinetic_energy = sys.particles().kinetic_energy();
+  sys.compute_forces();
+  res.mean_stress = wall_mean_stress(sys, R, L);
+  res.particles = sys.particles();
+}
+
+// Jammed packing (jam = true): growth with frictional linear contacts whose stiffness is the
+// Hertz secant stiffness at the design overlap, then quenched settling at full size with the
+// friction kept, so the grains come to rest in a frictional contact network at the target
+// porosity (docs/dem.md, "Packing").
+void jam_stage(const PackingParams& in, Particles p, const std::vector<double>& target,
+               double s0, double mean_r, PackingResult& res) {
+  const double R = in.diameter / 2, L = in.length;
+  const std::vector<Material> materials{in.material};
+  const double E = in.material.youngs_modulus, nu = in.material.poisson_ratio;
+  // Hertz between two mean grains: E* = E / (2(1 - nu^2)), R* = r/2; secant F/delta at delta_t.
+  const double e_star = E / (2 * (1 - nu * nu));
+  const double delta_t = in.jam_overlap * mean_r;
+  const double k = 4.0 / 3.0 * e_star * std::sqrt(0.5 * mean_r * delta_t);
+  const double n = static_cast<double>(target.size());
+  // k_s = 2/7 k_n: the tangential mode of a sphere (effective mass m/3.5) then has the normal
+  // mode's frequency, so friction does not lower the stable step.
+  auto law_of = [&](double friction) {
+    return linear_spring(k, 2.0 / 7.0 * k, friction, in.damping_ratio, in.damping_ratio);
+  };
+  std::optional<DemSystem> sys;
+  sys.emplace(std::move(p), materials, law_of(in.jam_friction), DemOptions{});
+  // Frictionless walls, so the wall zone is not held looser than the core by wall friction.
+  add_packing_walls(*sys, R, L, law_of(0.0));
+  const double dt = sys->stable_dt();
+  const int sps = in.jam_steps_per_stage;
+  auto stage = [&](double scale, double quench) {
+    set_scale(sys->mutable_particles(), target, scale, in.material.density, quench);
+    for (int j = 0; j < sps; ++j) sys->step(dt);
+    res.steps += sps;
+    ++res.stages;
+  };
+  const bool verbose = std::getenv("KOLSKY_PACKING_VERBOSE") != nullptr;
+  auto report = [&](const char* what, double scale, double p_now, double overlap) {
+    if (!verbose) return;
+    const DemEnergy e = sys->energy();
+    std::fprintf(stderr, "packing %s stage %d s %.5f p %.3e Pa Z %.2f ke/el %.2e overlap %.2e\n",
+                 what, res.stages, scale, p_now, 2.0 * static_cast<double>(sys->n_contacts()) / n,
+                 e.kinetic / std::max(e.elastic, 1e-300), overlap);
+  };
+  // Growth with friction: the grains lock into a frictional network as they touch.
+  for (int g = 1; g <= in.growth_stages; ++g) {
+    const double scale = s0 + (1 - s0) * static_cast<double>(g) / in.growth_stages;
+    stage(scale, in.jam_velocity_quench);
+    report("growth", scale, wall_mean_stress(*sys, R, L), 0);
+  }
+  // Settling at full size with quenched dynamics (v = omega = 0 at every stage, friction and
+  // contact histories kept): the over-compressed frictional network relaxes by sliding and
+  // rolling (its stress decays roughly geometrically) until the largest overlap is below
+  // overlap_tolerance x mean radius.
+  double overlap = max_packing_overlap(sys->particles(), in.diameter, L) / mean_r;
+  for (int k = 0; k < in.max_settle_stages && overlap >= in.overlap_tolerance; ++k) {
+    stage(1.0, 0.0);
+    overlap = max_packing_overlap(sys->particles(), in.diameter, L) / mean_r;
+    report("settle", 1.0, wall_mean_stress(*sys, R, L), overlap);
+  }
+  res.packing_friction = in.jam_friction;
+  res.kinetic_energy = sys->particles().kinetic_energy();
+  sys->compute_forces();
+  res.mean_stress = wall_mean_stress(*sys, R, L);
+  res.particles = sys->particles();
+  res.settled = overlap < in.overlap_tolerance;
+}
+
+}  // namespace
+
 PackingResult generate_packing(const PackingParams& in) {
   in.curve.validate();
   check(in.porosity > 0 && in.porosity < 1, "porosity", "must be in (0, 1)");
@@ -101,6 +323,11 @@ PackingResult generate_packing(const PackingParams& in) {
   check(in.overlap_tolerance > 0, "overlap_tolerance", "must be > 0");
   check(in.max_settle_stages >= 0, "max_settle_stages", "must be >= 0");
   check(in.material_index >= 0, "material_index", "must be >= 0");
+  check(in.jam_friction >= 0, "jam_friction", "must be >= 0");
+  check(in.jam_overlap > 0 && in.jam_overlap < 0.1, "jam_overlap", "must be in (0, 0.1)");
+  check(in.jam_steps_per_stage >= 1, "jam_steps_per_stage", "must be >= 1");
+  check(in.jam_velocity_quench >= 0 && in.jam_velocity_quench <= 1, "jam_velocity_quench",
+        "must be in [0, 1]");
   const std::vector<Material> materials{in.material};
   validate(materials);
 
@@ -159,52 +386,38 @@ PackingResult generate_packing(const PackingParams& in) {
     }
   }
 
-  // 3. growth with frictionless, damped linear contacts (grains and rigid walls). Linear, not
-  // Hertz: a Hertz contact softens as the overlap vanishes, so the last overlaps would relax
-  // ever more slowly. The stiffness only sets the time scale (the step follows it).
   double mean_r = 0;
   for (double r : target) mean_r += r;
   mean_r /= static_cast<double>(target.size());
-  const LinearSpring law = linear_spring(in.material.youngs_modulus * mean_r, 0.0, 0.0,
-                                         in.damping_ratio, 0.0);
-  DemOptions opt;
-  DemSystem sys(std::move(p), materials, law, opt);
-  sys.add_cylinder(CylinderWall{0, 0, R, std::nullopt, law});
-  sys.add_plane(PlaneWall{{0, 0, 0}, {0, 0, 1}, FixedPlane{}, law});
-  sys.add_plane(PlaneWall{{0, 0, L}, {0, 0, -1}, FixedPlane{}, law});
-  // The lightest grain only grows, so the step of the shrunk state stays stable throughout.
-  const double dt = sys.stable_dt();
-  const double rho = in.material.density;
-
-  auto stage = [&](double scale) {
-    Particles& q = sys.mutable_particles();
-    for (std::size_t i = 0; i < q.size(); ++i) {
-      set_radius(q, i, scale * target[i], rho);
-      q.v[i] = in.velocity_quench * q.v[i];
-      q.omega[i] = in.velocity_quench * q.omega[i];
-    }
-    for (int k = 0; k < in.steps_per_stage; ++k) sys.step(dt);
-    res.steps += in.steps_per_stage;
-  };
-  for (int g = 1; g <= in.growth_stages; ++g)
-    stage(s0 + (1 - s0) * static_cast<double>(g) / in.growth_stages);
-
-  // 4. settling at full size.
-  double overlap = max_packing_overlap(sys.particles(), in.diameter, L) / mean_r;
-  for (int k = 0; k < in.max_settle_stages && overlap >= in.overlap_tolerance; ++k) {
-    stage(1.0);
-    overlap = max_packing_overlap(sys.particles(), in.diameter, L) / mean_r;
+  if (in.jam) {
+    jam_stage(in, std::move(p), target, s0, mean_r, res);
+  } else {
+    loose_stage(in, std::move(p), target, s0, mean_r, res);
   }
-  res.settled = overlap < in.overlap_tolerance;
-  res.max_overlap = overlap;
-  res.kinetic_energy = sys.particles().kinetic_energy();
-  sys.compute_forces();
-  res.coordination = 2.0 * static_cast<double>(sys.n_contacts()) / static_cast<double>(target.size());
-  res.coordination_with_walls =
-      (2.0 * static_cast<double>(sys.n_contacts()) + static_cast<double>(sys.n_wall_contacts())) /
-      static_cast<double>(target.size());
-
-  res.particles = sys.particles();
+  // Census of the final state: coordination (with and without walls and rattlers), largest
+  // overlap, and the contact-virial mean stress the grains would carry with Hertz contacts
+  // (rigid Hertz walls), the law of the SHPB runs (Sec. 4.3).
+  {
+    const Particles& q = res.particles;
+    const double E = in.material.youngs_modulus, nu = in.material.poisson_ratio;
+    const double e_pair = E / (2 * (1 - nu * nu)), e_wall = E / (1 - nu * nu);
+    const Census c = contact_census(
+        q, in.diameter, L,
+        [&](double delta, double ri, double rj) {
+          return 4.0 / 3.0 * e_pair * std::sqrt(ri * rj / (ri + rj)) * delta * std::sqrt(delta);
+        },
+        [&](double delta, double r) {
+          return 4.0 / 3.0 * e_wall * std::sqrt(r) * delta * std::sqrt(delta);
+        });
+    const double nn = static_cast<double>(q.size());
+    res.coordination = 2.0 * static_cast<double>(c.pairs) / nn;
+    res.coordination_with_walls = (2.0 * static_cast<double>(c.pairs) + static_cast<double>(c.walls)) / nn;
+    res.mean_stress_hertz = c.virial / (3 * volume);
+    const auto [z, frac] = without_rattlers(q, in.diameter, L);
+    res.coordination_no_rattlers = z;
+    res.rattler_fraction = frac;
+    res.max_overlap = max_packing_overlap(q, in.diameter, L) / mean_r;
+  }
   Particles& out = res.particles;
   double solid = 0;
   for (std::size_t i = 0; i < out.size(); ++i) {

@@ -13,7 +13,9 @@
 //      `overlap_tolerance` x mean radius, or `max_settle_stages` is reached; then v = omega = 0.
 // Deterministic for a seed (xoshiro256**, and DemSystem is bitwise the same for any thread
 // count). Porosities below the frictionless jamming limit (solid fraction ~0.64) settle to a
-// nearly overlap-free state with few contacts. SI units.
+// nearly overlap-free state with few contacts. With `jam` (opt-in), steps 3-4 use frictional
+// contacts and a quenched settling instead, ending in a frictional contact network (Z ~ 4
+// without rattlers) at the same porosity. SI units.
 #pragma once
 #include <cstddef>
 #include <cstdint>
@@ -39,6 +41,16 @@ struct PackingParams {
   double overlap_tolerance = 1e-3;  ///< settled when max overlap < this x mean radius, -
   int max_settle_stages = 200;
   int max_rsa_attempts = 20000;     ///< per sphere, before the placement throws
+  // Jamming (docs/dem.md "Packing"). jam = false: the loose frictionless packing (steps 3-4
+  // above). jam = true: growth with frictional linear contacts (stiffness = Hertz secant at
+  // jam_overlap, walls frictionless), then settling at full size with v = omega = 0 at every
+  // stage until the largest overlap < overlap_tolerance (at most max_settle_stages);
+  // growth_stages, damping_ratio, overlap_tolerance and max_settle_stages apply to both.
+  bool jam = false;
+  double jam_friction = 0.3;          ///< grain-grain friction while packing (mu_pack), -
+  double jam_overlap = 1e-4;          ///< design overlap / mean radius for the stiffness, -
+  int jam_steps_per_stage = 200;
+  double jam_velocity_quench = 0.5;   ///< v, omega *= this at every growth stage, -
 };
 
 struct PackingResult {
@@ -55,6 +67,14 @@ struct PackingResult {
   double kinetic_energy = 0;      ///< at the end of settling, before zeroing, J
   int steps = 0;                  ///< DEM steps taken (growth + settling)
   bool settled = false;           ///< overlap tolerance reached within max_settle_stages
+  int stages = 0;                 ///< growth and settling stages run
+  double coordination_no_rattlers = 0;  ///< (contacts incl. walls) / grain after removing,
+                                        ///< repeatedly, grains with < 2 contacts, -
+  double rattler_fraction = 0;    ///< fraction of grains removed as rattlers, -
+  double mean_stress = 0;         ///< wall mean stress (s_zz + 2 s_rr)/3, packing law, end, Pa
+  double mean_stress_hertz = 0;   ///< contact-virial mean stress of the final positions with
+                                  ///< Hertz contacts (rigid Hertz walls), Pa
+  double packing_friction = 0;    ///< friction used while packing (0 without jam), -
 };
 
 /// Generates the packing. Throws kolsky::InputError("", "dem.packing...", rule) on bad
