@@ -55,15 +55,8 @@ void write_int_attr(hid_t obj, const std::string& name, int value) {
 
 void write_vector(hid_t group, const std::string& name, const std::vector<double>& v,
                   const std::string& unit) {
-  const hsize_t dims[1] = {static_cast<hsize_t>(v.size())};
-  Handle space(H5Screate_simple(1, dims, nullptr), H5Sclose, "dataspace for " + name);
-  Handle set(H5Dcreate2(group, name.c_str(), H5T_IEEE_F64LE, space.get(), H5P_DEFAULT, H5P_DEFAULT,
-                        H5P_DEFAULT),
-             H5Dclose, "create dataset " + name);
-  // An empty probe is a valid zero-length dataset; HDF5 rejects a null buffer, so skip the write.
-  if (!v.empty())
-    check(H5Dwrite(set.get(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, v.data()),
-          "write dataset " + name);
+  h5::write_doubles(group, name, v);  // an empty probe is a valid zero-length dataset
+  Handle set(H5Dopen2(group, name.c_str(), H5P_DEFAULT), H5Dclose, "open dataset " + name);
   write_string_attr(set.get(), "unit", unit);
 }
 
