@@ -48,6 +48,12 @@ CaseResult run_case(const BaseScene& base, const CaseSpec& c) {
     s["friction_faces"] = c.friction;
     s["friction_tube"] = c.friction;
     if (c.length > 0) s["length"] = c.length;
+    if (c.n_radial > 0) s["n_radial"] = c.n_radial;
+    if (c.n_axial > 0) s["n_axial"] = c.n_axial;
+    if (!c.bars.empty()) j["bars"]["kind"] = c.bars;
+    if (c.bar_mesh_radial > 0) j["bars"]["mesh_radial"] = c.bar_mesh_radial;
+    if (c.bar_element_length > 0) j["bars"]["element_length"] = c.bar_element_length;
+    if (c.end_time > 0) j["time"]["end"] = c.end_time;
     if (!c.pulse_file.empty()) j["pulse"]["file"] = c.pulse_file;
     j["pulse"]["scale"] = c.pulse_scale;
     auto sc = scene::parse_scene(j, base.path, base.dir);

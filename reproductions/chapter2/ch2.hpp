@@ -27,6 +27,11 @@ struct CaseSpec {
   double length = 0.0;       ///< specimen length, m; 0 keeps the scene's
   double friction = 0.0;     ///< Coulomb mu at both faces and the tube wall
   Table1D eos;               ///< loading table eps_v -> P (Pa), from (0, 0)
+  std::string bars;          ///< bar model ("characteristic", "meshed"); "" keeps the scene's
+  int bar_mesh_radial = 0;   ///< meshed bars: radial elements; 0 keeps the scene's/default
+  double bar_element_length = 0;  ///< meshed bars: axial element length, m; 0 keeps
+  int n_radial = 0, n_axial = 0;  ///< specimen mesh; 0 keeps the scene's
+  double end_time = 0;       ///< s; 0 keeps the scene's
 };
 
 struct CaseResult {

@@ -3,7 +3,9 @@
 //   (1) automated dry-EOS back-calculation (GSL Nelder-Mead) against the steel 230 MPa and
 //       polycarbonate 200 MPa (480/s) / 208 MPa (900/s) slopes, Sec. 2.3.4;
 //   (2) D from K, Sec. 2.3.4; (3) the 480/s strain-rate plateau, Fig. 2.5;
-//   (4) the equilibrium study, Sec. 2.4.2; (5) the water-content study, Secs. 2.3.5-2.4.1.
+//   (4) the equilibrium study, Sec. 2.4.2; (5) the water-content study, Secs. 2.3.5-2.4.1;
+//   (6) rate independence 480/s vs 900/s, Sec. 2.3.4; (7) 1-D vs meshed bars; (8) mesh
+//       refinement of the specimen (speed vs error).
 // Reference values live in targets.json (read here where the calibration needs them).
 #include <chrono>
 #include <cmath>
@@ -11,6 +13,7 @@
 #include <filesystem>
 
 #include "chapter2/calibrate.hpp"
+#include "chapter2/compare.hpp"
 #include "chapter2/studies.hpp"
 #include "common/driver_args.hpp"
 #include "harness/report.hpp"
@@ -29,6 +32,8 @@ std::string fmt(const char* f, double a) {
 struct ScaleSettings {
   int max_iterations;
   std::vector<double> water_contents;
+  ch2::BarComparisonSettings meshed_bars;
+  std::vector<std::pair<int, int>> refinement;  ///< specimen meshes, coarse to fine
 };
 
 }  // namespace
@@ -37,8 +42,11 @@ int main(int argc, char** argv) {
   const auto args = repro::parse_driver_args(argc, argv, "chapter2");
   const auto start = std::chrono::steady_clock::now();
   const bool smoke = args.scale == "smoke";
-  const ScaleSettings scale = smoke ? ScaleSettings{12, {0.0, 0.03, 0.05, 0.07, 0.11, 0.20}}
-                                    : ScaleSettings{120, {0.0, 0.03, 0.05, 0.07, 0.11, 0.20}};
+  // Meshed bars: full 4 radial x 2 mm (docs/fe.md: c0 within 1e-5 at 4 mm), smoke a coarse
+  // 2 x 8 mm that keeps `make test` short. Refinement: the specimen element size halved per level.
+  const ScaleSettings scale =
+      smoke ? ScaleSettings{12, {0.0, 0.03, 0.05, 0.07, 0.11, 0.20}, {2, 8e-3}, {{2, 4}, {4, 8}, {8, 16}}}
+            : ScaleSettings{120, {0.0, 0.03, 0.05, 0.07, 0.11, 0.20}, {4, 2e-3}, {{5, 10}, {10, 20}, {20, 40}, {40, 80}}};
   harness::ReportInput rep;
   rep.set = "chapter2";
   rep.scale = args.scale;
@@ -61,12 +69,17 @@ int main(int argc, char** argv) {
   // (1) Calibration.
   const auto start_table = ch2::read_table_csv(data + "dry_eos_initial_guess.csv");
   std::vector<ch2::CalibrationTest> tests(3);
-  tests[0].spec = {"steel, 480/s", steel, "", 1.0, 0.0, 0.0, {}};
+  auto spec_of = [](const std::string& label, const ch2::TubeSpec& tube, const std::string& pulse) {
+    ch2::CaseSpec c;
+    c.label = label, c.tube = tube, c.pulse_file = pulse;
+    return c;
+  };
+  tests[0].spec = spec_of("steel, 480/s", steel, "");
   tests[0].target_id = "ch2.constrained_modulus_steel";
-  tests[1].spec = {"polycarbonate, 480/s", pc, "", 1.0, 0.0, 0.0, {}};
+  tests[1].spec = spec_of("polycarbonate, 480/s", pc, "");
   tests[1].target_id = "ch2.constrained_modulus_polycarbonate_480";
-  tests[2].spec = {"polycarbonate, 900/s", pc, "../../data/digitized/chapter2/song2009_incident_900_reconstructed.csv",
-                   1.0, 0.0, 0.0, {}};
+  tests[2].spec = spec_of("polycarbonate, 900/s", pc,
+                          "../../data/digitized/chapter2/song2009_incident_900_reconstructed.csv");
   tests[2].target_id = "ch2.constrained_modulus_polycarbonate_900";
   // 900/s: the slope over its own calibration range (35-65 MPa, Sec. 2.3.4), i.e. to 20 % strain.
   tests[2].strain_hi = 0.20;
@@ -119,7 +132,7 @@ int main(int argc, char** argv) {
   m.scalar("ch2.constrained_modulus_theoretical_nu030", d_of(ch2::reference_value(reported, "ch2.poisson_ratio")));
 
   // (3) Strain-rate plateau of the 480/s polycarbonate test with the calibrated EOS; curves.
-  std::vector<shpb::SpecimenHistory> hist;
+  std::vector<shpb::SpecimenHistory> hist(tests.size());
   harness::Plot ss{"stress_strain_dry.png", "Dry sand, calibrated EOS: back-face stress vs strain (Eqs. 1.1, 1.2)",
                    "strain (-)", "stress (MPa)", {}, {}, {}};
   for (size_t k = 0; k < tests.size(); ++k) {
@@ -152,7 +165,7 @@ int main(int argc, char** argv) {
       rp.bands = {{"plateau window", {t0 * 1e6, t1 * 1e6}, {mean * 0.9, mean * 0.9}, {mean * 1.1, mean * 1.1}}};
       rep.plots.push_back(rp);
     }
-    hist.push_back(r.h);
+    hist[k] = r.h;
   }
   rep.plots.push_back(ss);
   harness::Plot eosp{"dry_eos.png", "Dry compaction EOS: start and calibrated table", "volumetric strain (-)",
@@ -175,6 +188,14 @@ int main(int argc, char** argv) {
   ch2::StudyContext ctx{&base, &targets, &reported, &m, &rep.plots, &summary, steel, args.repo_root, rep.out_dir};
   ch2::equilibrium_study(ctx, cal.table);
   ch2::water_content_study(ctx, scale.water_contents);
+  // (6) Rate independence (polycarbonate 480/s vs 900/s); (7) bar model; (8) mesh refinement.
+  if (!hist[1].t.empty() && !hist[2].t.empty()) ch2::rate_independence(ctx, hist[1], hist[2]);
+  auto pc480 = tests[1].spec;
+  pc480.eos = cal.table;
+  ch2::bar_model_comparison(ctx, pc480, scale.meshed_bars);
+  auto steel480 = tests[0].spec;
+  steel480.eos = cal.table;
+  ch2::mesh_refinement_study(ctx, steel480, scale.refinement);
 
   std::string tab = "| P (eps_v) | ";
   for (size_t k = 1; k < cal.table.x.size(); ++k) tab += fmt("%.2f", cal.table.x[k]) + " | ";

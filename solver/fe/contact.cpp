@@ -18,19 +18,28 @@ double coulomb(double f_old, double f_n, double k, double mu, double slip, doubl
   return f;
 }
 
-// Segment j of the polyline with z_j <= z < z_{j+1}, walking from the previous one. A slave
-// just past an end (by less than half the end segment: a specimen face node pushed slightly
-// beyond a tube of the specimen's own length) gets the end segment, its weight clamped onto the
-// end node; farther out it is off the surface (-1).
-int find_segment(const Nodes& nd, const std::vector<int>& master, double z, int guess) {
+// Coordinate of node i along axis a (0: r, 1: z) in the current configuration.
+double coord(const Nodes& nd, std::size_t i, int a) { return a == 0 ? nd.r(i) : nd.z(i); }
+double incr(const Nodes& nd, std::size_t i, int a) {
+  return a == 0 ? nd.ur[i] - nd.ur_prev[i] : nd.uz[i] - nd.uz_prev[i];
+}
+double vel(const Nodes& nd, std::size_t i, int a) { return a == 0 ? nd.vr[i] : nd.vz[i]; }
+double& ext(Nodes& nd, std::size_t i, int a) { return a == 0 ? nd.fr_ext[i] : nd.fz_ext[i]; }
+
+// Segment j of the polyline with x_j <= x < x_{j+1} (x the coordinate along axis `along`),
+// walking from the previous one. A slave just past an end (by less than half the end segment:
+// a specimen face node pushed slightly beyond a tube of the specimen's own length, or radially
+// beyond a meshed bar face) gets the end segment, its weight clamped onto the end node;
+// farther out it is off the surface (-1).
+int find_segment(const Nodes& nd, const std::vector<int>& master, double x, int guess, int along) {
   const int n_seg = static_cast<int>(master.size()) - 1;
-  auto zm = [&](int j) { return nd.z(static_cast<std::size_t>(master[static_cast<std::size_t>(j)])); };
+  auto xm = [&](int j) { return coord(nd, static_cast<std::size_t>(master[static_cast<std::size_t>(j)]), along); };
   if (n_seg < 1) return -1;
-  if (z < zm(0)) return zm(0) - z <= 0.5 * (zm(1) - zm(0)) ? 0 : -1;
-  if (z >= zm(n_seg)) return z - zm(n_seg) <= 0.5 * (zm(n_seg) - zm(n_seg - 1)) ? n_seg - 1 : -1;
+  if (x < xm(0)) return xm(0) - x <= 0.5 * (xm(1) - xm(0)) ? 0 : -1;
+  if (x >= xm(n_seg)) return x - xm(n_seg) <= 0.5 * (xm(n_seg) - xm(n_seg - 1)) ? n_seg - 1 : -1;
   int j = std::clamp(guess, 0, n_seg - 1);
-  while (j > 0 && z < zm(j)) --j;
-  while (j < n_seg - 1 && z >= zm(j + 1)) ++j;
+  while (j > 0 && x < xm(j)) --j;
+  while (j < n_seg - 1 && x >= xm(j + 1)) ++j;
   return j;
 }
 
@@ -114,31 +123,36 @@ void contact_cylinder(ContactSet& c, Nodes& nd, double radius) {
   }
 }
 
-void contact_polyline(ContactSet& c, Nodes& nd, const std::vector<int>& master) {
+void contact_polyline(ContactSet& c, Nodes& nd, const std::vector<int>& master, int normal_direction,
+                      int side) {
+  const int n = normal_direction, a_ax = 1 - normal_direction;  // normal and along axes
   for (std::size_t k = 0; k < c.node.size(); ++k) {
     const auto s = static_cast<std::size_t>(c.node[k]);
-    const int j = find_segment(nd, master, nd.z(s), c.segment[k]);
+    const int j = find_segment(nd, master, coord(nd, s, a_ax), c.segment[k], a_ax);
     double fn = 0.0, ft = 0.0;
     if (j >= 0) {
       c.segment[k] = j;
       const auto a = static_cast<std::size_t>(master[static_cast<std::size_t>(j)]);
       const auto b = static_cast<std::size_t>(master[static_cast<std::size_t>(j) + 1]);
-      const double xi = std::clamp((nd.z(s) - nd.z(a)) / (nd.z(b) - nd.z(a)), 0.0, 1.0);
-      const double g = nd.r(s) - ((1.0 - xi) * nd.r(a) + xi * nd.r(b));
-      const double dr_s = nd.ur[s] - nd.ur_prev[s];
-      const double dr_m = (1.0 - xi) * (nd.ur[a] - nd.ur_prev[a]) + xi * (nd.ur[b] - nd.ur_prev[b]);
-      fn = normal(c, k, g, nd.vr[s] - ((1.0 - xi) * nd.vr[a] + xi * nd.vr[b]), dr_s - dr_m);
-      const double slip = (nd.uz[s] - nd.uz_prev[s]) -
-                          ((1.0 - xi) * (nd.uz[a] - nd.uz_prev[a]) + xi * (nd.uz[b] - nd.uz_prev[b]));
+      const double xi = std::clamp((coord(nd, s, a_ax) - coord(nd, a, a_ax)) /
+                                       (coord(nd, b, a_ax) - coord(nd, a, a_ax)),
+                                   0.0, 1.0);
+      auto on_master = [&](auto f) { return (1.0 - xi) * f(a) + xi * f(b); };
+      // Penetration: the slave past the master surface on the master's side.
+      const double g = side * (on_master([&](std::size_t i) { return coord(nd, i, n); }) - coord(nd, s, n));
+      const double g_dot = side * (on_master([&](std::size_t i) { return vel(nd, i, n); }) - vel(nd, s, n));
+      const double dg = side * (on_master([&](std::size_t i) { return incr(nd, i, n); }) - incr(nd, s, n));
+      fn = normal(c, k, g, g_dot, dg);
+      const double slip = incr(nd, s, a_ax) - on_master([&](std::size_t i) { return incr(nd, i, a_ax); });
       ft = coulomb(c.tangential_force[k], fn, c.stiffness[k], c.friction, slip, c.friction_work);
-      nd.fr_ext[s] -= fn;
-      nd.fz_ext[s] += ft;
-      nd.fr_ext[a] += (1.0 - xi) * fn;
-      nd.fr_ext[b] += xi * fn;
-      nd.fz_ext[a] -= (1.0 - xi) * ft;
-      nd.fz_ext[b] -= xi * ft;
+      ext(nd, s, n) += side * fn;
+      ext(nd, s, a_ax) += ft;
+      ext(nd, a, n) -= side * (1.0 - xi) * fn;
+      ext(nd, b, n) -= side * xi * fn;
+      ext(nd, a, a_ax) -= (1.0 - xi) * ft;
+      ext(nd, b, a_ax) -= xi * ft;
     } else {
-      // Off the end of the tube: no contact, the stick spring lets go.
+      // Off the end of the surface: no contact, the stick spring lets go.
       normal(c, k, 0.0, 0.0, 0.0);
       ft = coulomb(c.tangential_force[k], 0.0, c.stiffness[k], c.friction, 0.0, c.friction_work);
     }
@@ -157,11 +171,14 @@ void contact_springs(const ContactSet& c, const Nodes& nd, const std::vector<int
     sp.dof[0] = 2 * s + normal_direction;
     sp.weight[0] = 1.0;
     if (master) {
-      const int j = find_segment(nd, *master, nd.z(static_cast<std::size_t>(s)), c.segment[k]);
+      // The master polyline runs along the tangential axis.
+      const double xs = coord(nd, static_cast<std::size_t>(s), tangential);
+      const int j = find_segment(nd, *master, xs, c.segment[k], tangential);
       if (j < 0) continue;
       const int a = (*master)[static_cast<std::size_t>(j)], b = (*master)[static_cast<std::size_t>(j) + 1];
-      const double za = nd.z(static_cast<std::size_t>(a)), zb = nd.z(static_cast<std::size_t>(b));
-      const double xi = std::clamp((nd.z(static_cast<std::size_t>(s)) - za) / (zb - za), 0.0, 1.0);
+      const double za = coord(nd, static_cast<std::size_t>(a), tangential);
+      const double zb = coord(nd, static_cast<std::size_t>(b), tangential);
+      const double xi = std::clamp((xs - za) / (zb - za), 0.0, 1.0);
       sp.dof[1] = 2 * a + normal_direction;
       sp.dof[2] = 2 * b + normal_direction;
       sp.weight[1] = abs_weights ? 1.0 : -(1.0 - xi);

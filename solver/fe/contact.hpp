@@ -7,7 +7,8 @@
 //                since the last call, capped at mu f_n (return mapping; Wriggers 2006,
 //                Computational Contact Mechanics, Sec. 5.2). mu = 0 gives f_t = 0 exactly.
 // Surfaces: a rigid plane normal to z (a bar face), a rigid cylinder r = R (rigid tube, or one
-// backed by a radial spring), and a polyline through deformable master nodes (meshed tube).
+// backed by a radial spring), and a polyline through deformable master nodes (meshed tube,
+// meshed bar face).
 // Energy: normal_work and friction_work accumulate the work the contact forces take from the
 // relative motion of the two sides (trapezoid in force over each step's relative displacement,
 // the pairing central differences conserve): spring energy plus what the dampers and Coulomb
@@ -48,10 +49,15 @@ struct ContactSet {
 double contact_plane(ContactSet& c, Nodes& nodes, double z_plane, double v_plane, int side);
 /// Rigid cylinder r = radius around the specimen (slaves inside). Adds to nodes.f*_ext.
 void contact_cylinder(ContactSet& c, Nodes& nodes, double radius);
-/// Deformable surface: the polyline through `master` nodes (ascending z, e.g. a tube's inner
-/// nodes), slaves on its small-r side; normal taken radial (the tube wall stays nearly
-/// straight). Reactions go to the two master nodes by their linear weights.
-void contact_polyline(ContactSet& c, Nodes& nodes, const std::vector<int>& master);
+/// Deformable surface: the polyline through `master` nodes, ascending along the axis normal to
+/// `normal_direction` (0: normal r, polyline along z, e.g. a tube's inner nodes; 1: normal z,
+/// polyline along r, e.g. a meshed bar's end face). `side`: where the master lies relative to
+/// the slaves along the normal, -1 master at larger coordinate (tube outside the specimen),
+/// +1 master at smaller coordinate (a bar face below the specimen's front face). The normal is
+/// taken along the axis (a tube wall or a bar face stays nearly straight). Reactions go to the
+/// two master nodes by their linear weights.
+void contact_polyline(ContactSet& c, Nodes& nodes, const std::vector<int>& master,
+                      int normal_direction = 0, int side = -1);
 
 /// A linear spring on up to 3 degrees of freedom (2 * node + {0: r, 1: z}): energy
 /// k (sum_j w_j x_j)^2 / 2. The linearised penalty contact, for time-step estimates.
@@ -62,7 +68,8 @@ struct SpringStencil {
 };
 
 /// Every spring the contact set could form at the current geometry (normal, and tangential
-/// when mu > 0); polyline slaves are paired with the segment at their current z.
+/// when mu > 0); polyline slaves are paired with the segment at their current position along
+/// the tangential axis (1 - normal_direction).
 /// abs_weights: put |N| <= 1 bounds (1) on the master weights, for a Gershgorin bound that holds
 /// as the slaves slide along the masters.
 void contact_springs(const ContactSet& c, const Nodes& nodes, const std::vector<int>* master,

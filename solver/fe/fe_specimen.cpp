@@ -28,6 +28,22 @@ void require(bool ok, const std::string& path, const std::string& rule) {
 
 // Checks the parameters and builds specimen (+ tube) blocks and parts.
 Body make_body(const FeSpecimenParams& p, Block& specimen, std::optional<Block>& tube) {
+  Mesh mesh;
+  std::vector<Part> parts;
+  add_specimen_blocks(p, mesh, parts, specimen, tube);
+  return Body(std::move(mesh), std::move(parts), p.threads);
+}
+
+}  // namespace
+
+double lame_wall_stiffness(const LinearElastic& m, double a, double t) {
+  const double b = a + t;
+  const double nu = m.poisson_ratio;
+  return m.youngs_modulus * (b * b - a * a) / (a * ((1.0 - nu) * a * a + (1.0 + nu) * b * b));
+}
+
+void add_specimen_blocks(const FeSpecimenParams& p, Mesh& mesh, std::vector<Part>& parts, Block& specimen,
+                         std::optional<Block>& tube) {
   require(p.radius > 0.0, "radius", "must be > 0");
   require(p.length > 0.0, "length", "must be > 0");
   require(p.n_r >= 1 && p.n_z >= 1, "n_r", "n_r and n_z must be >= 1");
@@ -37,9 +53,8 @@ Body make_body(const FeSpecimenParams& p, Block& specimen, std::optional<Block>&
   require(p.mass_damping >= 0.0, "mass_damping", "must be >= 0");
   require(p.energy_tolerance > 0.0, "energy_tolerance", "must be > 0");
   require(p.contact_damping >= 0.0 && p.contact_damping < 1.0, "contact_damping", "must lie in [0, 1)");
-  Mesh mesh;
   specimen = add_block(mesh, 0.0, p.radius, 0.0, p.length, p.n_r, p.n_z);
-  std::vector<Part> parts{Part{p.material, 0, specimen.n_elements()}};
+  parts.push_back(Part{p.material, specimen.first_element, specimen.n_elements()});
   if (const auto* t = std::get_if<MeshedTube>(&p.tube)) {
     require(t->thickness > 0.0, "tube.thickness", "must be > 0");
     require(t->length >= p.length, "tube.length", "must be >= the specimen length");
@@ -53,37 +68,63 @@ Body make_body(const FeSpecimenParams& p, Block& specimen, std::optional<Block>&
     require(t->thickness > 0.0, "tube.thickness", "must be > 0");
     t->material.validate("fe.tube.material");
   }
-  return Body(std::move(mesh), std::move(parts), p.threads);
 }
 
-// Ring area 2 pi * integral of N_i r dr of each node of a radial station list (m^2).
-std::vector<double> face_tributary(const std::vector<double>& r) {
-  std::vector<double> a(r.size(), 0.0);
-  for (std::size_t i = 0; i + 1 < r.size(); ++i) {
-    const double d = r[i + 1] - r[i];
-    a[i] += kTwoPi * d * (2.0 * r[i] + r[i + 1]) / 6.0;
-    a[i + 1] += kTwoPi * d * (r[i] + 2.0 * r[i + 1]) / 6.0;
+ContactSet tube_contact_set(const FeSpecimenParams& p, const Block& specimen, double modulus) {
+  ContactSet c;
+  if (std::holds_alternative<NoTube>(p.tube)) return c;
+  const double h_z = p.length / p.n_z, h_r = p.radius / p.n_r;
+  const double wall = std::holds_alternative<SpringTube>(p.tube)
+                          ? lame_wall_stiffness(std::get<SpringTube>(p.tube).material, p.radius,
+                                                std::get<SpringTube>(p.tube).thickness)
+                          : 0.0;
+  for (int j = 0; j <= p.n_z; ++j) {
+    const double span = (j == 0 || j == p.n_z) ? 0.5 * h_z : h_z;
+    const double ring = kTwoPi * p.radius * span;
+    double k = p.penalty_scale * modulus * ring / h_r;
+    if (wall > 0.0) k = 1.0 / (1.0 / k + 1.0 / (wall * ring));  // penalty in series with the tube
+    c.node.push_back(specimen.node(p.n_r, j));
+    c.stiffness.push_back(k);
   }
-  return a;
+  c.friction = p.friction_tube;
+  c.reset_history();
+  return c;
 }
 
-}  // namespace
+void apply_tube_contact(const Tube& tube, ContactSet& c, Nodes& nd, double radius,
+                        const std::vector<int>& tube_surface) {
+  std::visit(
+      [&](const auto& t) {
+        using T = std::decay_t<decltype(t)>;
+        if constexpr (std::is_same_v<T, RigidTube> || std::is_same_v<T, SpringTube>)
+          contact_cylinder(c, nd, radius);
+        else if constexpr (std::is_same_v<T, MeshedTube>)
+          contact_polyline(c, nd, tube_surface);
+      },
+      tube);
+}
 
-double lame_wall_stiffness(const LinearElastic& m, double a, double t) {
-  const double b = a + t;
-  const double nu = m.poisson_ratio;
-  return m.youngs_modulus * (b * b - a * a) / (a * ((1.0 - nu) * a * a + (1.0 + nu) * b * b));
+void set_contact_damping(ContactSet& c, const Nodes& nd, double zeta) {
+  c.damping.clear();
+  for (std::size_t k = 0; k < c.node.size(); ++k)
+    c.damping.push_back(2.0 * zeta * std::sqrt(c.stiffness[k] * nd.mass[static_cast<std::size_t>(c.node[k])]));
+}
+
+double energy_check_floor(const FeSpecimenParams& p) {
+  constexpr double kStrainFloor = 1e-9;
+  return 0.5 * max_constrained_modulus(p.material) * std::numbers::pi * p.radius * p.radius * p.length *
+         kStrainFloor * kStrainFloor;
 }
 
 FeSpecimen::FeSpecimen(const FeSpecimenParams& p)
-    : p_(p), body_(make_body(p, specimen_, tube_block_)) {
+    : p_(p), body_(make_body(p, specimen_, tube_block_)), energy_floor_(energy_check_floor(p)) {
   const Nodes& nd = body_.nodes();
   const double modulus = max_constrained_modulus(p.material);
-  const double h_z = p.length / p.n_z, h_r = p.radius / p.n_r;
+  const double h_z = p.length / p.n_z;
   // Bar faces: every node of the end rows, stiffness from its ring area and the layer depth.
   std::vector<double> r_station;
   for (int i = 0; i <= p.n_r; ++i) r_station.push_back(nd.r0[static_cast<std::size_t>(specimen_.node(i, 0))]);
-  const auto area = face_tributary(r_station);
+  const auto area = ring_tributary_areas(r_station);
   for (int i = 0; i <= p.n_r; ++i) {
     const double k = p.penalty_scale * modulus * area[static_cast<std::size_t>(i)] / h_z;
     front_.node.push_back(specimen_.node(i, 0));
@@ -96,31 +137,11 @@ FeSpecimen::FeSpecimen(const FeSpecimenParams& p)
   back_.reset_history();
   back_.surface_position = p.length;
 
-  if (!std::holds_alternative<NoTube>(p.tube)) {
-    const double wall = std::holds_alternative<SpringTube>(p.tube)
-                            ? lame_wall_stiffness(std::get<SpringTube>(p.tube).material, p.radius,
-                                                  std::get<SpringTube>(p.tube).thickness)
-                            : 0.0;
-    for (int j = 0; j <= p.n_z; ++j) {
-      const double span = (j == 0 || j == p.n_z) ? 0.5 * h_z : h_z;
-      const double ring = kTwoPi * p.radius * span;
-      double k = p.penalty_scale * modulus * ring / h_r;
-      if (wall > 0.0) k = 1.0 / (1.0 / k + 1.0 / (wall * ring));  // penalty in series with the tube
-      tube_.node.push_back(specimen_.node(p.n_r, j));
-      tube_.stiffness.push_back(k);
-    }
-    tube_.friction = p.friction_tube;
-    tube_.reset_history();
-  }
+  tube_ = tube_contact_set(p, specimen_, modulus);
   if (tube_block_)
     for (int j = 0; j <= tube_block_->n_z; ++j) tube_surface_.push_back(tube_block_->node(0, j));
   // Normal dampers: a fraction contact_damping of critical for each slave node on its spring.
-  for (ContactSet* c : {&front_, &back_, &tube_}) {
-    c->damping.clear();
-    for (std::size_t k = 0; k < c->node.size(); ++k)
-      c->damping.push_back(2.0 * p.contact_damping *
-                           std::sqrt(c->stiffness[k] * nd.mass[static_cast<std::size_t>(c->node[k])]));
-  }
+  for (ContactSet* c : {&front_, &back_, &tube_}) set_contact_damping(*c, nd, p.contact_damping);
 }
 
 double FeSpecimen::area() const { return std::numbers::pi * p_.radius * p_.radius; }
@@ -157,15 +178,7 @@ FaceForces FeSpecimen::forces(const FaceState& at) {
   FaceForces f;
   f.front = contact_plane(front_, nd, at.intrusion_front, at.rate_front, +1);
   f.back = contact_plane(back_, nd, p_.length - at.intrusion_back, -at.rate_back, -1);
-  std::visit(
-      [&](const auto& tube) {
-        using T = std::decay_t<decltype(tube)>;
-        if constexpr (std::is_same_v<T, RigidTube> || std::is_same_v<T, SpringTube>)
-          contact_cylinder(tube_, nd, p_.radius);
-        else if constexpr (std::is_same_v<T, MeshedTube>)
-          contact_polyline(tube_, nd, tube_surface_);
-      },
-      p_.tube);
+  apply_tube_contact(p_.tube, tube_, nd, p_.radius, tube_surface_);
   // Work of the faces on the specimen, trapezoid in force (exact for a linear spring).
   face_work_ += 0.5 * (face_forces_.front + f.front) * (at.intrusion_front - faces_.intrusion_front) +
                 0.5 * (face_forces_.back + f.back) * (at.intrusion_back - faces_.intrusion_back);
@@ -193,7 +206,8 @@ void FeSpecimen::advance(double dt) {
   // mismatch that is large next to the still tiny energies, while an unstable mode needs tens
   // of steps to grow from round-off (x1.9 per step at 1.05 times the critical dt).
   constexpr long kWarmupSteps = 16;
-  if (n_steps_ > kWarmupSteps && std::fabs(e.balance_error()) > p_.energy_tolerance * peak_energy_)
+  if (n_steps_ > kWarmupSteps &&
+      std::fabs(e.balance_error()) > std::max(p_.energy_tolerance * peak_energy_, energy_floor_))
     throw NumericalError("fe specimen: energy balance broken (held " + sci(e.held()) + " J, faces did " +
                              sci(e.face_work) + " J, initial kinetic " + sci(e.initial_kinetic) +
                              " J): unstable step?",

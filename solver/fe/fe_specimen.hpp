@@ -83,6 +83,25 @@ struct FeEnergy {
   double balance_error() const { return held() - face_work - initial_kinetic; }
 };
 
+/// Pieces FeSpecimen is built from, shared with the meshed-bar assembly (meshed_shpb.hpp):
+/// validates p and appends the specimen block (and a meshed tube) with their parts. Throws
+/// InputError.
+void add_specimen_blocks(const FeSpecimenParams& p, Mesh& mesh, std::vector<Part>& parts, Block& specimen,
+                         std::optional<Block>& tube);
+/// The specimen's outer nodes against the tube (empty for NoTube), penalty stiffness from the
+/// steepest specimen modulus `modulus` (in series with the Lame wall for SpringTube).
+ContactSet tube_contact_set(const FeSpecimenParams& p, const Block& specimen, double modulus);
+/// Tube contact forces for the tube variant (tube_surface: the meshed tube's inner nodes).
+void apply_tube_contact(const Tube& tube, ContactSet& c, Nodes& nodes, double radius,
+                        const std::vector<int>& tube_surface);
+/// Normal dampers, fraction zeta of critical for each slave node on its spring.
+/// Absolute floor of the energy-balance check (J): the elastic energy M_max V eps^2 / 2 of the
+/// specimen at a strain of 1e-9, far above round-off (a body at rest in contact holds ~1e-29 J,
+/// enough to break a purely relative check) and far below any SHPB loading; an unstable mode
+/// growing from round-off passes it within tens of steps.
+double energy_check_floor(const FeSpecimenParams& p);
+void set_contact_damping(ContactSet& c, const Nodes& nodes, double zeta);
+
 class FeSpecimen {
  public:
   /// Throws InputError for invalid geometry, counts, materials or contact parameters.
@@ -132,7 +151,7 @@ class FeSpecimen {
   std::vector<int> tube_surface_;  // inner tube nodes, ascending z (meshed tube)
   FaceState faces_{};
   FaceForces face_forces_{};
-  double face_work_ = 0, initial_kinetic_ = 0, peak_energy_ = 0;
+  double face_work_ = 0, initial_kinetic_ = 0, peak_energy_ = 0, energy_floor_ = 0;
   long n_steps_ = 0;
 };
 

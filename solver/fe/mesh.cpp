@@ -1,5 +1,6 @@
 #include "fe/mesh.hpp"
 
+#include <numbers>
 #include <stdexcept>
 #include <string>
 
@@ -38,6 +39,17 @@ Block add_block(Mesh& mesh, double r_in, double r_out, double z_lo, double z_hi,
     for (int i = 0; i < n_r; ++i)
       mesh.quads.push_back({b.node(i, j), b.node(i + 1, j), b.node(i + 1, j + 1), b.node(i, j + 1)});
   return b;
+}
+
+std::vector<double> ring_tributary_areas(const std::vector<double>& r) {
+  constexpr double kTwoPi = 2.0 * std::numbers::pi;
+  std::vector<double> a(r.size(), 0.0);
+  for (std::size_t i = 0; i + 1 < r.size(); ++i) {
+    const double d = r[i + 1] - r[i];
+    a[i] += kTwoPi * d * (2.0 * r[i] + r[i + 1]) / 6.0;
+    a[i + 1] += kTwoPi * d * (r[i] + 2.0 * r[i + 1]) / 6.0;
+  }
+  return a;
 }
 
 void Mesh::build_incidence() {

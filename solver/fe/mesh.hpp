@@ -54,6 +54,10 @@ struct Mesh {
 /// Throws std::invalid_argument for empty ranges, r_in < 0 or non-positive counts.
 Block add_block(Mesh& mesh, double r_in, double r_out, double z_lo, double z_hi, int n_r, int n_z);
 
+/// Ring area 2 pi * integral of N_i r dr of each node of a radial station list r_0 < r_1 < ...
+/// (m^2): the tributary area of a face node, for face loads and penalty stiffnesses.
+std::vector<double> ring_tributary_areas(const std::vector<double>& r);
+
 /// Element nodal coordinates in the current configuration (t^n).
 void current_coordinates(const Mesh& m, int e, std::array<double, 4>& r, std::array<double, 4>& z);
 

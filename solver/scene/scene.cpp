@@ -225,8 +225,14 @@ Scene parse_scene(const nlohmann::json& j, const std::string& file, const std::s
   s.file = file;
   shpb::ExperimentSpec& e = s.spec;
   e.title = r.text("title");
-  e.bar_kind = r.text("bars.kind") == "sphere_chain" ? shpb::BarKind::sphere_chain
-                                                     : shpb::BarKind::characteristic;
+  const std::string kind = r.text("bars.kind");
+  e.bar_kind = kind == "sphere_chain" ? shpb::BarKind::sphere_chain
+               : kind == "meshed"     ? shpb::BarKind::meshed
+                                      : shpb::BarKind::characteristic;
+  if (e.bar_kind == shpb::BarKind::meshed) {
+    e.bar_mesh.n_radial = r.integer("bars.mesh_radial");
+    e.bar_mesh.element_length = r.number("bars.element_length");
+  }
   e.incident = read_bar(r, "incident", e.bar_kind);
   e.transmission = read_bar(r, "transmission", e.bar_kind);
   e.pulse = read_pulse(r, base_dir);

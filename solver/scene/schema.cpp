@@ -137,8 +137,14 @@ std::vector<ParamSpec> build_table() {
   s.add(VT::string, "title", std::string(), "-", kNoRange,
         "Free-text title, copied into the outputs");
   s.add(VT::choice, "bars.kind", "characteristic", "-", kNoRange,
-        "Bar model: characteristic (exact delay line) or sphere_chain (Sec. 4.3)", "",
-        {"characteristic", "sphere_chain"});
+        "Bar model: characteristic (exact delay line), sphere_chain (Sec. 4.3) or meshed "
+        "(axisymmetric FE bars, specimen.model = fe only)", "",
+        {"characteristic", "sphere_chain", "meshed"});
+  const shpb::BarMeshSpec bm;
+  s.add(VT::integer, "bars.mesh_radial", bm.n_radial, "-", kMeshCount,
+        "Radial elements of each meshed bar", "bars.kind=meshed");
+  s.add(VT::number, "bars.element_length", bm.element_length, "m", kPositive,
+        "Target axial element length of the meshed bars", "bars.kind=meshed");
   add_scene_bar(s, "incident");
   add_scene_bar(s, "transmission");
 

@@ -13,7 +13,15 @@
 
 namespace kolsky::shpb {
 
-enum class BarKind { characteristic, sphere_chain };
+/// characteristic: exact 1-D delay-line bars; sphere_chain: Sec. 4.3 ball chains; meshed: both
+/// bars as axisymmetric FE meshes in one body with an FE specimen (fe/meshed_shpb.hpp).
+enum class BarKind { characteristic, sphere_chain, meshed };
+
+/// Mesh of meshed bars (BarKind::meshed only).
+struct BarMeshSpec {
+  int n_radial = 4;               ///< radial elements per bar
+  double element_length = 2e-3;   ///< target axial element length, m
+};
 
 struct BarSpec {
   bar::BarMaterial material;
@@ -45,6 +53,7 @@ struct ExperimentSpec {
   std::string title;
   BarKind bar_kind = BarKind::characteristic;
   BarSpec incident, transmission;
+  BarMeshSpec bar_mesh;
   bar::Pulse pulse = bar::TrapezoidPulse{};
   SpecimenSpec specimen = bar::ColumnParams{};
   TimeSpec time;

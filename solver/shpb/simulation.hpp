@@ -6,9 +6,16 @@
 //   energy_tolerance * (energy the pulse injected) stops the run as a blow-up (NumericalError).
 //   Checkpoint/restart: ShpbState is everything the loop carries from one step to the next
 //   (bars, specimen, wave-energy accumulators, probes so far); run() can hand it out every k
-//   steps and resume from it, continuing bitwise as the uninterrupted run. Not for fe.
+//   steps and resume from it, continuing bitwise as the uninterrupted run. Not for fe (nor,
+//   therefore, for meshed bars).
+//   Meshed bars (BarKind::meshed, FE specimen only): bars and specimen are one FE body
+//   (fe::MeshedShpb); the 1-D bar objects are then unused. The probes keep their names: gauges
+//   are the meshed bars' surface strains, the face waves are derived from the first gauge of
+//   each bar by the 1-D shift (gauge_waves.hpp), as the classic analysis does with lab records;
+//   energy_delivered is the work of the far-end traction.
 #pragma once
 #include <functional>
+#include <optional>
 #include <string>
 #include <variant>
 #include <vector>
@@ -16,6 +23,7 @@
 #include "bar/characteristic_bar.hpp"
 #include "bar/specimen_column.hpp"
 #include "bar/sphere_chain.hpp"
+#include "fe/meshed_shpb.hpp"
 #include "core/progress.hpp"
 #include "dem/dem_state.hpp"
 #include "shpb/analysis.hpp"
@@ -39,7 +47,8 @@ struct RunResult {
   long steps = 0;
 
   const Probe& probe(const std::string& name) const;  ///< throws std::out_of_range
-  /// Face waves (compression-positive bar strains) with t = 0 at the incident arrival.
+  /// Face waves (compression-positive bar strains) with t = 0 at the incident arrival, up to
+  /// the first sample where a wave is undefined (gauge-derived waves of meshed bars).
   FaceWaves face_waves(double incident_modulus, double transmission_modulus) const;
 };
 
@@ -96,6 +105,7 @@ class SimulatedShpb {
  private:
   void step(double t, double dt);
   void sample(double t, RunResult& r);
+  void sample_meshed(double t, RunResult& r);
   ShpbState save_state(const RunResult& r, long next_step) const;
   void restore_state(const ShpbState& s, RunResult& r);
   const RunControl* control_ = nullptr;  // during run(): the snapshot hook
@@ -103,6 +113,7 @@ class SimulatedShpb {
   ExperimentSpec spec_;
   Specimen specimen_;
   Bar incident_, transmission_;
+  std::optional<fe::MeshedShpb> meshed_;      // BarKind::meshed: bars + specimen in one FE body
   time_loop::Schedule schedule_;
   bar::FaceForces forces_;
   double w_i_ = 0, w_r_ = 0, w_t_ = 0;         // Eqs. 2.11-2.13 from the face waves
