@@ -12,6 +12,7 @@
 #include <regex>
 #include <set>
 #include <string>
+#include <vector>
 
 namespace fs = std::filesystem;
 
@@ -60,9 +61,11 @@ TEST(Provenance, TargetReferencesMatchDigitizedValues) {
       digitized[v.at("id").get<std::string>()] = v.at("value").get<double>();
   }
   int matched = 0;
-  for (const auto& entry : fs::directory_iterator(root / "reproductions")) {
-    const fs::path t = entry.path() / "targets.json";
-    if (!fs::exists(t)) continue;
+  std::vector<fs::path> files;  // targets.json, and targets_smoke.json where a set has one
+  for (const auto& entry : fs::directory_iterator(root / "reproductions"))
+    for (const char* name : {"targets.json", "targets_smoke.json"})
+      if (fs::exists(entry.path() / name)) files.push_back(entry.path() / name);
+  for (const fs::path& t : files) {
     std::ifstream f(t);
     const auto doc = nlohmann::json::parse(f);
     for (const auto& target : doc.at("targets")) {

@@ -36,12 +36,32 @@ DemSpecimen::DemSpecimen(Particles particles, std::vector<Material> materials, C
   sys_.add_cylinder(tube);
   sys_.compute_forces();
   elastic_0_ = sys_.energy().elastic;
+  held_ = walls.hold_until_loaded;
+  forces_0_ = {sys_.plane_force(front_), sys_.plane_force(back_)};
 }
 
 double DemSpecimen::area() const { return std::numbers::pi * walls_.radius * walls_.radius; }
 
 FaceForces DemSpecimen::forces(const FaceState& faces) {
   faces_ = faces;
+  if (held_) {
+    // Nothing has pushed into the specimen yet: the grains stay as packed (v = 0) and the
+    // faces feel the initial state's wall forces. An outward drift of a face (the residual
+    // force pushing the bar back) does not release the hold; see docs/dem.md.
+    const double t = walls_.hold_threshold;
+    if (!(faces.intrusion_front > t || faces.intrusion_back > t)) {
+      ++held_calls_;
+      // Work of the faces on the held specimen (negative while the residual force pushes a
+      // face out), so that energy() changes by exactly the faces' work while held.
+      held_work_ += forces_0_.front * (faces.intrusion_front - held_faces_.intrusion_front) +
+                    forces_0_.back * (faces.intrusion_back - held_faces_.intrusion_back);
+      held_faces_ = faces;
+      return forces_0_;
+    }
+    held_ = false;
+    release_faces_ = faces;
+    stepping_ = false;  // no step is in progress: evaluate the forces afresh below
+  }
   sys_.drive_plane(front_, faces.intrusion_front, faces.rate_front);
   sys_.drive_plane(back_, faces.intrusion_back, faces.rate_back);
   if (stepping_) {
@@ -54,11 +74,16 @@ FaceForces DemSpecimen::forces(const FaceState& faces) {
 }
 
 void DemSpecimen::advance(double dt) {
+  if (held_) return;
   sys_.begin_step(dt);
   stepping_ = true;
 }
 
 SpecimenEnergy DemSpecimen::energy() const {
+  // Held: the grains are as constructed; the residual forces' work is all that has changed.
+  // After the release the ledger is the system's own, which already holds that work to first
+  // order (the walls moved by the same intrusions): it jumps by the second-order remainder.
+  if (held_) return {0.0, held_work_};
   const DemEnergy e = sys_.energy();
   return {e.kinetic, e.elastic - elastic_0_ + e.dissipated};
 }

@@ -23,6 +23,12 @@ struct SpecimenWalls {
   WallLaw end_law = linear_spring(2.6e6, 1.6e6, 0.3);
   WallLaw tube_law = linear_spring(2.6e6, 1.6e6, 0.3);
   std::optional<TubeCompliance> tube_compliance;  ///< none: rigid tube
+  /// Hold the grains until loaded (docs/dem.md, "Holding the specimen until the wave
+  /// arrives"): while neither face has moved into the specimen by more than hold_threshold,
+  /// forces() returns the wall forces of the initial state and advance() takes no DEM step.
+  /// Off by default (existing scenes unchanged); the Chapter 4 scenes turn it on.
+  bool hold_until_loaded = false;
+  double hold_threshold = 1e-12;  ///< m, face intrusion that releases the hold
 };
 
 class DemSpecimen {
@@ -48,6 +54,12 @@ class DemSpecimen {
   /// overlaps), J: energy the specimen may release without any work from the faces.
   double initial_elastic_energy() const { return elastic_0_; }
   bool finite() const { return sys_.finite(); }
+  /// Whether the grains are still held (hold_until_loaded and no face has moved in yet).
+  bool held() const { return held_; }
+  /// forces() calls answered while held (steps skipped), and the face intrusions (m) at the
+  /// release; the outward drift of a face under the packing's residual force is bounded by it.
+  long held_calls() const { return held_calls_; }
+  FaceState faces_at_release() const { return release_faces_; }
 
   const DemSystem& system() const { return sys_; }
   int front_plane() const { return front_; }
@@ -65,6 +77,12 @@ class DemSpecimen {
   FaceState faces_;
   bool stepping_ = false;
   double elastic_0_ = 0;
+  bool held_ = false;
+  long held_calls_ = 0;
+  FaceForces forces_0_;     // wall forces of the initial state (planes at 0)
+  FaceState release_faces_;
+  FaceState held_faces_;    // faces at the last held call
+  double held_work_ = 0;    // work of the faces on the held specimen, J
 };
 
 }  // namespace kolsky::dem

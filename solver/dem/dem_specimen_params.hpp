@@ -6,6 +6,7 @@
 #include "dem/contact_hertz_mindlin.hpp"
 #include "dem/dem_specimen.hpp"
 #include "dem/packing.hpp"
+#include "dem/packing_cache.hpp"
 
 namespace kolsky::dem {
 
@@ -14,11 +15,13 @@ struct DemSpecimenParams {
   HertzMindlinParams contact;     ///< grain-grain friction and restitution
   SpecimenWalls walls;            ///< end planes and tube (length/radius follow the packing)
   DemOptions options;             ///< rolling retardation, skin, dt safety
+  std::string packing_cache;      ///< cache directory (packing_cache.hpp); "" = none
 };
 
-/// Packs the grains (generate_packing) and builds the specimen between the two end planes.
+/// Packs the grains (generate_packing, through the cache when p.packing_cache is set) and
+/// builds the specimen between the two end planes.
 inline DemSpecimen make_dem_specimen(const DemSpecimenParams& p) {
-  PackingResult packed = generate_packing(p.packing);
+  PackingResult packed = cached_packing(p.packing, p.packing_cache).result;
   SpecimenWalls walls = p.walls;
   walls.length = p.packing.length;
   walls.radius = 0.5 * p.packing.diameter;

@@ -134,7 +134,7 @@ void DemSystem::restore_state(const DemState& s) {
 }
 
 DemSpecimenState DemSpecimen::save_state() const {
-  return {sys_.save_state(), faces_, stepping_, elastic_0_};
+  return {sys_.save_state(), faces_, stepping_, elastic_0_, held_, held_work_};
 }
 
 void DemSpecimen::restore_state(const DemSpecimenState& s) {
@@ -142,6 +142,9 @@ void DemSpecimen::restore_state(const DemSpecimenState& s) {
   faces_ = s.faces;
   stepping_ = s.stepping;
   elastic_0_ = s.elastic_0;
+  held_ = s.held;
+  held_work_ = s.held_work;
+  held_faces_ = s.faces;  // while held, the faces of the last forces() call
 }
 
 }  // namespace kolsky::dem

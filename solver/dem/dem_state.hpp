@@ -56,6 +56,8 @@ struct DemSpecimenState {
   FaceState faces;
   bool stepping = false;
   double elastic_0 = 0;
+  bool held = false;  ///< SpecimenWalls::hold_until_loaded still holding
+  double held_work = 0;  ///< work of the faces on the held specimen, J
 };
 
 }  // namespace kolsky::dem

@@ -102,6 +102,8 @@ void put_dem(hid_t g, const dem::DemSpecimenState& s) {
                                                     f.rate_front, f.rate_back});
   h5::write_attr(g, "stepping", std::int64_t{s.stepping});
   h5::write_attr(g, "elastic_0", s.elastic_0);
+  h5::write_attr(g, "held", std::int64_t{s.held});
+  h5::write_attr(g, "held_work", s.held_work);
 }
 
 void put_bar(hid_t parent, const char* name, const shpb::BarState& b) {
@@ -194,6 +196,8 @@ dem::DemSpecimenState get_dem(hid_t g) {
   s.faces = {f[0], f[1], f[2], f[3]};
   s.stepping = h5::read_attr_int(g, "stepping") != 0;
   s.elastic_0 = h5::read_attr_double(g, "elastic_0");
+  s.held = H5Aexists(g, "held") > 0 && h5::read_attr_int(g, "held") != 0;  // absent: older file
+  s.held_work = H5Aexists(g, "held_work") > 0 ? h5::read_attr_double(g, "held_work") : 0.0;
   return s;
 }
 

@@ -173,6 +173,14 @@ dem::DemSpecimenParams read_dem_specimen(JsonReader& r, const std::string& base_
   d.packing.diameter = r.number("specimen.diameter");
   d.packing.length = r.number("specimen.length");
   d.packing.seed = static_cast<std::uint64_t>(r.integer("specimen.seed"));
+  d.packing.jam = r.text("specimen.packing") == "jammed";
+  if (std::string cache = r.text("specimen.packing_cache"); !cache.empty()) {
+    fs::path cp(cache);  // relative to the scene file's folder, like the CSV paths
+    if (cp.is_relative()) cp = fs::path(base_dir.empty() ? "." : base_dir) / cp;
+    d.packing_cache = fs::absolute(cp).lexically_normal().string();
+    r.resolve("specimen.packing_cache", d.packing_cache);
+  }
+  d.walls.hold_until_loaded = r.boolean("specimen.hold_until_loaded");
   const double g = r.number("specimen.grain_shear_modulus");
   const double nu = r.number("specimen.grain_poisson_ratio");
   d.packing.material = dem::Material{2.0 * g * (1.0 + nu), nu, r.number("specimen.grain_density")};

@@ -234,6 +234,18 @@ std::vector<ParamSpec> build_table() {
         "Target porosity of the packing (Sec. 4.3: 0.44)", "specimen.model=dem");
   s.add(VT::integer, "specimen.seed", static_cast<int>(pack.seed), "-", kNonNegative,
         "Seed of the grain sampling and placement", "specimen.model=dem");
+  s.add(VT::choice, "specimen.packing", pack.jam ? "jammed" : "loose", "-", kNoRange,
+        "Packing procedure: loose (frictionless growth) or jammed (frictional contact network "
+        "at the target porosity; docs/dem.md, Packing)",
+        "specimen.model=dem", {"loose", "jammed"});
+  s.add(VT::string, "specimen.packing_cache", std::string(), "-", kNoRange,
+        "Folder (relative to the scene file) where packings are stored by a hash of all packing "
+        "parameters and reused; empty = no cache (docs/dem.md, Packing cache)",
+        "specimen.model=dem");
+  s.add(VT::boolean, "specimen.hold_until_loaded", dem::SpecimenWalls{}.hold_until_loaded, "-",
+        kNoRange,
+        "Hold the grains as packed (no DEM step) until a face moves into the specimen (docs/dem.md)",
+        "specimen.model=dem");
   s.add(VT::number, "specimen.grain_shear_modulus", grain.shear_modulus(), "Pa", kPositive,
         "Grain shear modulus G (Table 4.1: 30 GPa)", "specimen.model=dem");
   s.add(VT::number, "specimen.grain_poisson_ratio", grain.poisson_ratio, "-", kPoisson,

@@ -1,0 +1,54 @@
+// Chapter 4 reproduction helpers: one DEM SHPB case (the set's scene JSON with a variant
+// rolling factor), and the measurements of Sec. 4.4 on it, truncated where the back-face stress
+// first reaches the comparison limit (10 MPa, Sec. 4.4.1).
+#pragma once
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "dem/packing_cache.hpp"
+#include "shpb/analysis.hpp"
+#include "shpb/simulation.hpp"
+
+namespace kolsky::ch4 {
+
+struct CaseResult {
+  std::string label;
+  double rolling_factor = 1;
+  bool ok = false;
+  std::string failure;
+  shpb::RunResult run;          ///< probes (interface stresses stress_front / stress_back)
+  shpb::SpecimenHistory h;      ///< bar-gauge (face-wave) analysis, t = 0 at the arrival
+  std::vector<double> t_if, front_if, back_if, strain_if;  ///< interface probes from arrival
+  double wall_s = 0, dt = 0;
+  long steps = 0, held_steps = 0;
+  std::size_t grains = 0;
+};
+
+/// Runs the scene `j` (relative paths against `dir`) with specimen.rolling_factor = k.
+CaseResult run_case(nlohmann::json j, const std::string& scene_path, const std::string& dir,
+                    double k, const std::string& label);
+
+/// What Sec. 4.4 compares, on one case, up to the first sample with back stress >= limit.
+struct Measures {
+  long i_lo = -1, i_end = -1;      ///< bar-gauge samples: first >= lo_stress, first >= limit
+  bool reached_limit = false;
+  double max_back = 0;             ///< Pa, largest bar-gauge back stress in the run
+  double modulus_initial = NAN;    ///< Pa, fit of stress_back vs strain, back in [lo, mid]
+  double modulus_late = NAN;       ///< Pa, fit over back stress in [0.7 limit, limit]
+  double modulus_back = NAN;       ///< Pa, fit over [lo, limit] (whole comparison window)
+  double modulus_avg = NAN;        ///< Pa, same window, stress_avg (Eq. 4.16)
+  double modulus_back_if = NAN, modulus_avg_if = NAN;  ///< interface-probe versions
+  double alpha_min = NAN, alpha_first = NAN, alpha_last = NAN, alpha_mean = NAN;
+  double back_arrival = NAN;       ///< s after the incident arrival: back interface stress
+                                   ///< first exceeds its initial value by 0.2 MPa
+  double time_at_limit = NAN;      ///< s after the incident arrival
+};
+Measures measure(const CaseResult& c, double lo_stress, double mid_stress, double limit);
+
+nlohmann::json read_json(const std::string& path);
+std::vector<double> scaled(const std::vector<double>& v, double f, long n = -1);
+/// Reference value of a target in targets.json (its "value", in the file's unit).
+double reference_value(const nlohmann::json& targets, const std::string& id);
+
+}  // namespace kolsky::ch4

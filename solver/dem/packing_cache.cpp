@@ -1,0 +1,146 @@
+// Packing cache (see packing_cache.hpp).
+#include "dem/packing_cache.hpp"
+
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <random>
+#include <type_traits>
+#include <vector>
+
+namespace kolsky::dem {
+
+namespace {
+
+namespace fs = std::filesystem;
+constexpr char kMagic[8] = {'K', 'P', 'A', 'C', 'K', '0', '0', '1'};
+
+struct Hasher {
+  std::uint64_t h = 1469598103934665603ull;  // FNV-1a 64
+  template <class T>
+  void add(const T& v) {
+    static_assert(std::is_trivially_copyable_v<T>);
+    unsigned char b[sizeof(T)];
+    std::memcpy(b, &v, sizeof(T));
+    for (unsigned char c : b) h = (h ^ c) * 1099511628211ull;
+  }
+  void add(const std::vector<double>& v) {
+    add(v.size());
+    for (double d : v) add(d);
+  }
+};
+
+// The PackingResult scalars, in file order.
+template <class F>
+void for_scalars(PackingResult& r, F&& f) {
+  f(r.porosity), f(r.target_porosity), f(r.expected_count), f(r.coordination),
+      f(r.coordination_with_walls), f(r.max_overlap), f(r.curve_deviation),
+      f(r.curve_deviation_bound), f(r.kinetic_energy), f(r.coordination_no_rattlers),
+      f(r.rattler_fraction), f(r.mean_stress), f(r.mean_stress_hertz), f(r.packing_friction);
+}
+
+void write_file(const std::string& path, std::uint64_t key, PackingResult r) {
+  std::random_device rd;
+  const std::string tmp = path + ".tmp." + std::to_string(rd());
+  {
+    std::ofstream f(tmp, std::ios::binary);
+    auto put = [&](const auto& v) { f.write(reinterpret_cast<const char*>(&v), sizeof v); };
+    f.write(kMagic, sizeof kMagic);
+    put(key);
+    const std::uint64_t n = r.particles.size();
+    put(n);
+    const std::int64_t steps = r.steps, stages = r.stages, settled = r.settled;
+    put(steps), put(stages), put(settled);
+    for_scalars(r, [&](double& v) { put(v); });
+    const Particles& p = r.particles;
+    for (const auto* a : {&p.x, &p.v, &p.omega, &p.f, &p.torque})
+      f.write(reinterpret_cast<const char*>(a->data()), static_cast<std::streamsize>(n * sizeof(Vec3)));
+    for (const auto* a : {&p.radius, &p.mass, &p.inertia})
+      f.write(reinterpret_cast<const char*>(a->data()), static_cast<std::streamsize>(n * sizeof(double)));
+    f.write(reinterpret_cast<const char*>(p.material.data()), static_cast<std::streamsize>(n * sizeof(int)));
+    if (!f) {
+      std::error_code ec;
+      fs::remove(tmp, ec);
+      return;
+    }
+  }
+  std::error_code ec;
+  fs::rename(tmp, path, ec);  // atomic on POSIX within one directory
+  if (ec) fs::remove(tmp, ec);
+}
+
+bool read_file(const std::string& path, std::uint64_t key, PackingResult& r) {
+  std::ifstream f(path, std::ios::binary);
+  if (!f) return false;
+  auto get = [&](auto& v) { f.read(reinterpret_cast<char*>(&v), sizeof v); };
+  char magic[8];
+  f.read(magic, sizeof magic);
+  std::uint64_t k = 0, n = 0;
+  get(k), get(n);
+  if (!f || std::memcmp(magic, kMagic, sizeof kMagic) != 0 || k != key || n > (1ull << 32))
+    return false;
+  std::int64_t steps = 0, stages = 0, settled = 0;
+  get(steps), get(stages), get(settled);
+  for_scalars(r, [&](double& v) { get(v); });
+  Particles& p = r.particles;
+  for (auto* a : {&p.x, &p.v, &p.omega, &p.f, &p.torque}) {
+    a->resize(n);
+    f.read(reinterpret_cast<char*>(a->data()), static_cast<std::streamsize>(n * sizeof(Vec3)));
+  }
+  for (auto* a : {&p.radius, &p.mass, &p.inertia}) {
+    a->resize(n);
+    f.read(reinterpret_cast<char*>(a->data()), static_cast<std::streamsize>(n * sizeof(double)));
+  }
+  p.material.resize(n);
+  f.read(reinterpret_cast<char*>(p.material.data()), static_cast<std::streamsize>(n * sizeof(int)));
+  if (!f || f.peek() != std::char_traits<char>::eof()) return false;
+  r.steps = static_cast<int>(steps);
+  r.stages = static_cast<int>(stages);
+  r.settled = settled != 0;
+  r.count = n;
+  return true;
+}
+
+}  // namespace
+
+std::string packing_cache_key(const PackingParams& q) {
+  Hasher h;
+  h.add(kPackingAlgorithmVersion);
+  h.add(q.curve.diameter), h.add(q.curve.percent_passing);
+  h.add(q.porosity), h.add(q.diameter), h.add(q.length), h.add(q.seed);
+  h.add(q.material.youngs_modulus), h.add(q.material.poisson_ratio), h.add(q.material.density);
+  h.add(q.material_index), h.add(q.initial_solid_fraction), h.add(q.growth_stages);
+  h.add(q.steps_per_stage), h.add(q.velocity_quench), h.add(q.damping_ratio);
+  h.add(q.overlap_tolerance), h.add(q.max_settle_stages), h.add(q.max_rsa_attempts);
+  h.add(q.jam), h.add(q.jam_friction), h.add(q.jam_overlap), h.add(q.jam_steps_per_stage);
+  h.add(q.jam_velocity_quench);
+  char buf[17];
+  std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(h.h));
+  return buf;
+}
+
+CachedPacking cached_packing(const PackingParams& params, const std::string& dir) {
+  CachedPacking out;
+  if (dir.empty()) {
+    out.result = generate_packing(params);
+    return out;
+  }
+  const std::string key = packing_cache_key(params);
+  out.file = (fs::path(dir) / ("packing_" + key + ".bin")).string();
+  const std::uint64_t k = std::stoull(key, nullptr, 16);
+  PackingResult r;
+  if (read_file(out.file, k, r)) {
+    r.target_porosity = params.porosity;
+    out.result = std::move(r);
+    out.from_cache = true;
+    return out;
+  }
+  out.result = generate_packing(params);
+  std::error_code ec;
+  fs::create_directories(dir, ec);
+  if (!ec) write_file(out.file, k, out.result);
+  return out;
+}
+
+}  // namespace kolsky::dem
