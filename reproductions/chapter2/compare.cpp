@@ -1,4 +1,5 @@
 #include "chapter2/compare.hpp"
+#include "common/format.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -14,11 +15,7 @@ constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr double kSlopeLo = 0.02, kSlopeHi = 0.10;  // stress-strain slope window
 constexpr double kLoadingEnd = 350e-6;              // end of the Sec. 2.3.4 plateau window
 
-std::string fmt(const char* f, double a) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, f, a);
-  return buf;
-}
+using repro::fmt;
 
 // Index one past the loading branch: up to the peak strain among t <= t_end.
 long branch_end(const shpb::SpecimenHistory& h, double t_end) {

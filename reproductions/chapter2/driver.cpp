@@ -17,16 +17,13 @@
 #include "chapter2/studies.hpp"
 #include "common/driver_args.hpp"
 #include "harness/report.hpp"
+#include "common/format.hpp"
 
 using namespace kolsky;
 
 namespace {
 
-std::string fmt(const char* f, double a) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, f, a);
-  return buf;
-}
+using repro::fmt;
 
 // Per-scale study settings (the scene file sets the mesh and sampling).
 struct ScaleSettings {

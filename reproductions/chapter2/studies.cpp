@@ -8,6 +8,7 @@
 #include "eos/eos_curve.hpp"
 #include "eos/moisture_law.hpp"
 #include "eos/three_phase.hpp"
+#include "common/format.hpp"
 
 namespace kolsky::ch2 {
 
@@ -15,11 +16,7 @@ namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
-std::string fmt(const char* f, double a) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, f, a);
-  return buf;
-}
+using repro::fmt;
 
 // Analysis windows shared with the driver (measurement definitions, not reference values).
 constexpr double kPlateauT0 = 125e-6, kPlateauT1 = 350e-6;  // Sec. 2.3.4 plateau window

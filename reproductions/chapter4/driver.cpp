@@ -17,16 +17,13 @@
 #include "common/driver_args.hpp"
 #include "harness/report.hpp"
 #include "scene/scene.hpp"
+#include "common/format.hpp"
 
 using namespace kolsky;
 
 namespace {
 
-std::string fmt(const char* f, double a) {
-  char buf[96];
-  std::snprintf(buf, sizeof buf, f, a);
-  return buf;
-}
+using repro::fmt;
 std::string mpa(double pa) { return fmt("%.1f MPa", pa / 1e6); }
 
 }  // namespace

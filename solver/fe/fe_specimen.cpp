@@ -116,25 +116,30 @@ double energy_check_floor(const FeSpecimenParams& p) {
          kStrainFloor * kStrainFloor;
 }
 
+void face_contact_sets(const FeSpecimenParams& p, const Block& specimen, const Nodes& nodes,
+                       double modulus, ContactSet& front, ContactSet& back) {
+  const double h_z = p.length / p.n_z;
+  std::vector<double> r_station;
+  for (int i = 0; i <= p.n_r; ++i) r_station.push_back(nodes.r0[static_cast<std::size_t>(specimen.node(i, 0))]);
+  const auto area = ring_tributary_areas(r_station);
+  for (int i = 0; i <= p.n_r; ++i) {
+    const double k = p.penalty_scale * modulus * area[static_cast<std::size_t>(i)] / h_z;
+    front.node.push_back(specimen.node(i, 0));
+    back.node.push_back(specimen.node(i, p.n_z));
+    front.stiffness.push_back(k);
+    back.stiffness.push_back(k);
+  }
+  front.friction = back.friction = p.friction_faces;
+  front.reset_history();
+  back.reset_history();
+}
+
 FeSpecimen::FeSpecimen(const FeSpecimenParams& p)
     : p_(p), body_(make_body(p, specimen_, tube_block_)), energy_floor_(energy_check_floor(p)) {
   const Nodes& nd = body_.nodes();
   const double modulus = max_constrained_modulus(p.material);
-  const double h_z = p.length / p.n_z;
   // Bar faces: every node of the end rows, stiffness from its ring area and the layer depth.
-  std::vector<double> r_station;
-  for (int i = 0; i <= p.n_r; ++i) r_station.push_back(nd.r0[static_cast<std::size_t>(specimen_.node(i, 0))]);
-  const auto area = ring_tributary_areas(r_station);
-  for (int i = 0; i <= p.n_r; ++i) {
-    const double k = p.penalty_scale * modulus * area[static_cast<std::size_t>(i)] / h_z;
-    front_.node.push_back(specimen_.node(i, 0));
-    back_.node.push_back(specimen_.node(i, p.n_z));
-    front_.stiffness.push_back(k);
-    back_.stiffness.push_back(k);
-  }
-  front_.friction = back_.friction = p.friction_faces;
-  front_.reset_history();
-  back_.reset_history();
+  face_contact_sets(p, specimen_, nd, modulus, front_, back_);
   back_.surface_position = p.length;
 
   tube_ = tube_contact_set(p, specimen_, modulus);

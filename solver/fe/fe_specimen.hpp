@@ -88,6 +88,10 @@ struct FeEnergy {
 /// InputError.
 void add_specimen_blocks(const FeSpecimenParams& p, Mesh& mesh, std::vector<Part>& parts, Block& specimen,
                          std::optional<Block>& tube);
+/// The specimen's end rows against the bar faces: every node of row 0 (front) and row n_z
+/// (back), penalty stiffness penalty_scale x modulus x ring area / layer depth, face friction.
+void face_contact_sets(const FeSpecimenParams& p, const Block& specimen, const Nodes& nodes,
+                       double modulus, ContactSet& front, ContactSet& back);
 /// The specimen's outer nodes against the tube (empty for NoTube), penalty stiffness from the
 /// steepest specimen modulus `modulus` (in series with the Lame wall for SpringTube).
 ContactSet tube_contact_set(const FeSpecimenParams& p, const Block& specimen, double modulus);

@@ -63,19 +63,7 @@ MeshedShpb::MeshedShpb(const MeshedShpbParams& p)
 
   // Specimen end rows against the bar faces: FeSpecimen's plane penalty, node for node.
   const double modulus = max_constrained_modulus(sp.material);
-  std::vector<double> r_station;
-  for (int i = 0; i <= sp.n_r; ++i) r_station.push_back(nd.r0[static_cast<std::size_t>(specimen_.node(i, 0))]);
-  const auto area = ring_tributary_areas(r_station);
-  for (int i = 0; i <= sp.n_r; ++i) {
-    const double k = sp.penalty_scale * modulus * area[static_cast<std::size_t>(i)] / (sp.length / sp.n_z);
-    front_.node.push_back(specimen_.node(i, 0));
-    back_.node.push_back(specimen_.node(i, sp.n_z));
-    front_.stiffness.push_back(k);
-    back_.stiffness.push_back(k);
-  }
-  front_.friction = back_.friction = sp.friction_faces;
-  front_.reset_history();
-  back_.reset_history();
+  face_contact_sets(sp, specimen_, nd, modulus, front_, back_);
   for (int i = 0; i <= p.bar_n_r; ++i) {
     incident_face_.push_back(incident_.node(i, incident_.n_z));
     transmission_face_.push_back(transmission_.node(i, 0));
