@@ -33,6 +33,18 @@ PackingParams small_song(double diameter, double length, std::uint64_t seed) {
   return p;
 }
 
+// Two packings from the same input are bitwise the same grain for grain.
+void expect_same_packing(const PackingResult& a, const PackingResult& b) {
+  ASSERT_EQ(a.count, b.count);
+  for (std::size_t i = 0; i < a.count; ++i) {
+    ASSERT_EQ(a.particles.x[i].x, b.particles.x[i].x);
+    ASSERT_EQ(a.particles.x[i].y, b.particles.x[i].y);
+    ASSERT_EQ(a.particles.x[i].z, b.particles.x[i].z);
+    ASSERT_EQ(a.particles.radius[i], b.particles.radius[i]);
+  }
+  EXPECT_EQ(a.steps, b.steps);
+}
+
 TEST(DemPacking, ReachesPorosityCountCurveAndStaysInside) {
   const PackingParams in = small_song(0.006, 0.004, 7);  // ~1,500 grains
   const PackingResult r = generate_packing(in);
@@ -76,14 +88,7 @@ TEST(DemPacking, ReachesPorosityCountCurveAndStaysInside) {
 TEST(DemPacking, DeterministicForASeed) {
   const PackingParams in = small_song(0.004, 0.003, 11);  // ~450 grains
   const PackingResult a = generate_packing(in), b = generate_packing(in);
-  ASSERT_EQ(a.count, b.count);
-  for (std::size_t i = 0; i < a.count; ++i) {
-    ASSERT_EQ(a.particles.x[i].x, b.particles.x[i].x);
-    ASSERT_EQ(a.particles.x[i].y, b.particles.x[i].y);
-    ASSERT_EQ(a.particles.x[i].z, b.particles.x[i].z);
-    ASSERT_EQ(a.particles.radius[i], b.particles.radius[i]);
-  }
-  EXPECT_EQ(a.steps, b.steps);
+  expect_same_packing(a, b);
   PackingParams other = in;
   other.seed = 12;
   const PackingResult c = generate_packing(other);
@@ -130,14 +135,8 @@ TEST(DemPacking, JammedPackingIsDeterministic) {
   in.jam = true;
   in.max_settle_stages = 5;  // determinism does not need convergence
   const PackingResult a = generate_packing(in), b = generate_packing(in);
-  ASSERT_EQ(a.count, b.count);
-  for (std::size_t i = 0; i < a.count; ++i) {
-    ASSERT_EQ(a.particles.x[i].x, b.particles.x[i].x);
-    ASSERT_EQ(a.particles.x[i].y, b.particles.x[i].y);
-    ASSERT_EQ(a.particles.x[i].z, b.particles.x[i].z);
-  }
+  expect_same_packing(a, b);
   EXPECT_EQ(a.mean_stress, b.mean_stress);
-  EXPECT_EQ(a.steps, b.steps);
 }
 
 TEST(DemPacking, RefusesBadInput) {
