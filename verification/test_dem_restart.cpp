@@ -12,46 +12,18 @@
 #include "dem/assembly.hpp"
 #include "dem/dem_specimen.hpp"
 #include "dem/dem_state.hpp"
+#include "dem_busy_scene.hpp"
 
 namespace kolsky::dem {
 namespace {
 
-const std::vector<Material> kSand{{78e9, 0.3, 2650}};
-constexpr double kR = 1.5e-4, kA = 2 * kR * 0.999, kTube = 1.3e-3;
+using test::kBusySand;
+const test::BusyScene kScene{};  // ~400 grains, 9 x 9 x 9 lattice in a 1.3 mm tube
+const std::vector<Material>& kSand = kBusySand;
 
-// ~400 jittered-lattice grains in a compliant tube, friction, damping, rolling retardation, a
-// plane pushed in at 10 m/s, and a small skin so the run rebuilds its lists several times.
-Particles grains() {
-  const Particles lat = cubic_lattice(9, 9, 9, kR, kA, {-4 * kA, -4 * kA, kR}, 0, kSand);
-  Particles p;
-  for (std::size_t i = 0; i < lat.size(); ++i)
-    if (std::hypot(lat.x[i].x, lat.x[i].y) < kTube - kR)
-      p.add(lat.x[i], kR * (1 - 0.02 * static_cast<double>(i % 5)), 0, kSand);
-  randomize_velocities(p, 3.0, 5);
-  for (auto& w : p.omega) w = {1e3, -2e3, 5e2};
-  return p;
-}
-
-DemOptions options() {
-  DemOptions opt;
-  opt.rolling.factor_per_reference_step = 0.99999975;
-  opt.skin_over_min_radius = 0.1;
-  return opt;
-}
-
-DemSystem busy_system() {
-  DemSystem sys(grains(), kSand, HertzMindlin(kSand, {0.5, 0.5}), options());
-  const WallLaw hw = HertzMindlinWall(kSand, kSand[0], {0.5, 0.5});
-  const double top = 9 * kA + kR;
-  sys.add_plane({{0, 0, 0}, {0, 0, 1}, FixedPlane{}, hw});
-  sys.add_plane({{0, 0, top}, {0, 0, -1}, PrescribedPlane{{{0.0}, {10.0}}}, hw});
-  CylinderWall tube;
-  tube.radius = kTube;
-  tube.law = linear_spring(2.6e6, 1.6e6, 0.3);
-  tube.compliance = TubeCompliance{200e9, 2e-4, 8100, top};
-  sys.add_cylinder(tube);
-  return sys;
-}
+Particles grains() { return test::busy_grains(kScene); }
+DemOptions options() { return test::busy_options(); }
+DemSystem busy_system() { return test::busy_system(kScene); }
 
 template <class T>
 bool same_bits(const std::vector<T>& a, const std::vector<T>& b) {
@@ -110,12 +82,12 @@ TEST(TestDemRestart, SystemContinuesBitwiseAfterRestore) {
 
 TEST(TestDemRestart, SpecimenContinuesBitwiseFromMidStep) {
   SpecimenWalls w;
-  w.length = 9 * kA + 2 * kR;
-  w.radius = kTube;
+  w.length = kScene.top() + kScene.r;
+  w.radius = kScene.tube_radius;
   w.tube_compliance = TubeCompliance{200e9, 2e-4, 8100, w.length};
   auto make = [&] {
     Particles p = grains();
-    for (auto& x : p.x) x.z += 0.5 * kR;  // centres strictly inside 0 < z < L
+    for (auto& x : p.x) x.z += 0.5 * kScene.r;  // centres strictly inside 0 < z < L
     return DemSpecimen(p, kSand, HertzMindlin(kSand, {0.5, 0.5}), w, options());
   };
   DemSpecimen whole = make(), first = make();

@@ -13,6 +13,7 @@
 
 #include "dem/assembly.hpp"
 #include "dem/dem_system.hpp"
+#include "dem_busy_scene.hpp"
 
 namespace kolsky::dem {
 namespace {
@@ -130,30 +131,7 @@ std::size_t brute_force_contacts(const Particles& p) {
 // random velocities, big enough that every loop runs in parallel (DemSystem runs loops under
 // 2048 items on one thread).
 DemSystem busy_specimen() {
-  DemOptions opt;
-  opt.rolling.factor_per_reference_step = 0.99999975;
-  opt.skin_over_min_radius = 0.1;  // small skin: forces several rebuilds in a short run
-  const double r = 1.5e-4, a = 2 * r * 0.999, radius = 2.5e-3;
-  const Particles lattice = cubic_lattice(17, 17, 17, r, a, {-8 * a, -8 * a, r}, 0, kSand);
-  Particles p;
-  for (std::size_t i = 0; i < lattice.size(); ++i) {
-    const Vec3& x = lattice.x[i];
-    if (std::hypot(x.x, x.y) < radius - r) p.add(x, r * (1 - 0.02 * (i % 5)), 0, kSand);
-  }
-  randomize_velocities(p, 5.0, 5);
-  for (auto& w : p.omega) w = {1e3, -2e3, 5e2};
-  const HertzMindlinParams hp{0.5, 0.5};
-  DemSystem sys(p, kSand, HertzMindlin(kSand, hp), opt);
-  const WallLaw hw = HertzMindlinWall(kSand, kSand[0], hp);
-  const double top = 17 * a + r;
-  sys.add_plane({{0, 0, 0}, {0, 0, 1}, FixedPlane{}, hw});
-  sys.add_plane({{0, 0, top}, {0, 0, -1}, PrescribedPlane{{{0.0}, {10.0}}}, hw});
-  CylinderWall tube;
-  tube.radius = radius;
-  tube.law = linear_spring(2.6e6, 1.6e6, 0.3);
-  tube.compliance = TubeCompliance{200e9, 5e-4, 8100, top};
-  sys.add_cylinder(tube);
-  return sys;
+  return test::busy_system({.cells = 17, .tube_radius = 2.5e-3, .tube_wall = 5e-4, .speed = 5.0});
 }
 
 TEST(VerifyDemAssembly, OneAndTwoThreadsAgreeBitwise) {
