@@ -17,6 +17,8 @@
 #include "dem/assembly.hpp"
 #include "dem/contact_linear.hpp"
 #include "dem/dem_system.hpp"
+#include "dem/packing_walls.hpp"
+#include "dem/prestress.hpp"
 #include "psd/sampling.hpp"
 
 namespace kolsky::dem {
@@ -186,21 +188,6 @@ std::pair<double, double> without_rattlers(const Particles& p, double diameter, 
   return {kept > 0 ? sum / kept : 0.0, n > 0 ? 1.0 - kept / static_cast<double>(n) : 0.0};
 }
 
-// The walls of the packing cylinder with one law.
-void add_packing_walls(DemSystem& sys, double R, double L, const WallLaw& law) {
-  sys.add_cylinder(CylinderWall{0, 0, R, std::nullopt, law});
-  sys.add_plane(PlaneWall{{0, 0, 0}, {0, 0, 1}, FixedPlane{}, law});
-  sys.add_plane(PlaneWall{{0, 0, L}, {0, 0, -1}, FixedPlane{}, law});
-}
-
-// Mean stress (compression +) from the wall forces: (sigma_zz + 2 sigma_rr)/3 with
-// sigma_zz = mean end-plane force / (pi R^2), sigma_rr = tube force / (2 pi R L).
-double wall_mean_stress(const DemSystem& sys, double R, double L) {
-  const double szz = 0.5 * (sys.plane_force(0) + sys.plane_force(1)) / (kPi * R * R);
-  const double srr = sys.cylinder_force(0) / (2 * kPi * R * L);
-  return (szz + 2 * srr) / 3;
-}
-
 void set_scale(Particles& q, const std::vector<double>& target, double scale, double rho,
                double quench) {
   for (std::size_t i = 0; i < q.size(); ++i) {
@@ -306,7 +293,63 @@ void jam_stage(const PackingParams& in, Particles p, const std::vector<double>& 
   res.settled = overlap < in.overlap_tolerance;
 }
 
+// Census of the final state: coordination (with and without walls and rattlers), largest
+// overlap, and the contact-virial mean stress the grains would carry with Hertz contacts
+// (rigid Hertz walls), the law of the SHPB runs (Sec. 4.3); then the grains are put at rest
+// and the porosity is taken from the final radii.
+void take_census(PackingResult& res, const PackingParams& in) {
+  const double L = in.length;
+  const double volume = psd::cylinder_volume(in.diameter, L);
+  double mean_r = 0;
+  for (double r : res.particles.radius) mean_r += r;
+  mean_r /= static_cast<double>(res.particles.size());
+  {
+    const Particles& q = res.particles;
+    const double E = in.material.youngs_modulus, nu = in.material.poisson_ratio;
+    const double e_pair = E / (2 * (1 - nu * nu)), e_wall = E / (1 - nu * nu);
+    const Census c = contact_census(
+        q, in.diameter, L,
+        [&](double delta, double ri, double rj) {
+          return 4.0 / 3.0 * e_pair * std::sqrt(ri * rj / (ri + rj)) * delta * std::sqrt(delta);
+        },
+        [&](double delta, double r) {
+          return 4.0 / 3.0 * e_wall * std::sqrt(r) * delta * std::sqrt(delta);
+        });
+    const double nn = static_cast<double>(q.size());
+    res.coordination = 2.0 * static_cast<double>(c.pairs) / nn;
+    res.coordination_with_walls = (2.0 * static_cast<double>(c.pairs) + static_cast<double>(c.walls)) / nn;
+    res.mean_stress_hertz = c.virial / (3 * volume);
+    const auto [z, frac] = without_rattlers(q, in.diameter, L);
+    res.coordination_no_rattlers = z;
+    res.rattler_fraction = frac;
+    res.max_overlap = max_packing_overlap(q, in.diameter, L) / mean_r;
+  }
+  Particles& out = res.particles;
+  double solid = 0;
+  for (std::size_t i = 0; i < out.size(); ++i) {
+    out.v[i] = {};
+    out.omega[i] = {};
+    out.f[i] = {};
+    out.torque[i] = {};
+    out.material[i] = in.material_index;
+    solid += 4.0 / 3.0 * kPi * std::pow(out.radius[i], 3);
+  }
+  res.count = out.size();
+  res.porosity = 1 - solid / volume;
+}
+
 }  // namespace
+
+void prestress_result(PackingResult& res, const PackingParams& in) {
+  const PrestressOutcome o = prestress_packing(res.particles, in);
+  res.prestress_scale = o.scale;
+  res.prestress_stages = o.stages;
+  res.prestress_converged = o.converged;
+  res.mean_stress = o.mean_stress;
+  res.steps += o.steps;
+  res.stages += o.stages;
+  take_census(res, in);
+}
 
 PackingResult generate_packing(const PackingParams& in) {
   in.curve.validate();
@@ -328,8 +371,24 @@ PackingResult generate_packing(const PackingParams& in) {
   check(in.jam_steps_per_stage >= 1, "jam_steps_per_stage", "must be >= 1");
   check(in.jam_velocity_quench >= 0 && in.jam_velocity_quench <= 1, "jam_velocity_quench",
         "must be in [0, 1]");
+  check(in.initial_stress >= 0 && std::isfinite(in.initial_stress), "initial_stress",
+        "must be finite and >= 0");
+  check(in.prestress_friction >= 0, "prestress_friction", "must be >= 0");
+  check(in.prestress_restitution > 0 && in.prestress_restitution <= 1, "prestress_restitution",
+        "must be in (0, 1]");
+  check(in.prestress_tolerance > 0 && in.prestress_tolerance < 1, "prestress_tolerance",
+        "must be in (0, 1)");
+  check(in.prestress_servo_interval >= 1, "prestress_servo_interval", "must be >= 1");
+  check(in.prestress_max_steps >= 1, "prestress_max_steps", "must be >= 1");
   const std::vector<Material> materials{in.material};
   validate(materials);
+  if (in.initial_stress > 0) {  // the unstressed packing, then the pre-stress
+    PackingParams base = in;
+    base.initial_stress = 0;
+    PackingResult res = generate_packing(base);
+    prestress_result(res, in);
+    return res;
+  }
 
   const double R = in.diameter / 2, L = in.length;
   const double volume = psd::cylinder_volume(in.diameter, L);
@@ -394,42 +453,7 @@ PackingResult generate_packing(const PackingParams& in) {
   } else {
     loose_stage(in, std::move(p), target, s0, mean_r, res);
   }
-  // Census of the final state: coordination (with and without walls and rattlers), largest
-  // overlap, and the contact-virial mean stress the grains would carry with Hertz contacts
-  // (rigid Hertz walls), the law of the SHPB runs (Sec. 4.3).
-  {
-    const Particles& q = res.particles;
-    const double E = in.material.youngs_modulus, nu = in.material.poisson_ratio;
-    const double e_pair = E / (2 * (1 - nu * nu)), e_wall = E / (1 - nu * nu);
-    const Census c = contact_census(
-        q, in.diameter, L,
-        [&](double delta, double ri, double rj) {
-          return 4.0 / 3.0 * e_pair * std::sqrt(ri * rj / (ri + rj)) * delta * std::sqrt(delta);
-        },
-        [&](double delta, double r) {
-          return 4.0 / 3.0 * e_wall * std::sqrt(r) * delta * std::sqrt(delta);
-        });
-    const double nn = static_cast<double>(q.size());
-    res.coordination = 2.0 * static_cast<double>(c.pairs) / nn;
-    res.coordination_with_walls = (2.0 * static_cast<double>(c.pairs) + static_cast<double>(c.walls)) / nn;
-    res.mean_stress_hertz = c.virial / (3 * volume);
-    const auto [z, frac] = without_rattlers(q, in.diameter, L);
-    res.coordination_no_rattlers = z;
-    res.rattler_fraction = frac;
-    res.max_overlap = max_packing_overlap(q, in.diameter, L) / mean_r;
-  }
-  Particles& out = res.particles;
-  double solid = 0;
-  for (std::size_t i = 0; i < out.size(); ++i) {
-    out.v[i] = {};
-    out.omega[i] = {};
-    out.f[i] = {};
-    out.torque[i] = {};
-    out.material[i] = in.material_index;
-    solid += 4.0 / 3.0 * kPi * std::pow(out.radius[i], 3);
-  }
-  res.count = out.size();
-  res.porosity = 1 - solid / volume;
+  take_census(res, in);
   return res;
 }
 

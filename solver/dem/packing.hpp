@@ -15,7 +15,9 @@
 // count). Porosities below the frictionless jamming limit (solid fraction ~0.64) settle to a
 // nearly overlap-free state with few contacts. With `jam` (opt-in), steps 3-4 use frictional
 // contacts and a quenched settling instead, ending in a frictional contact network (Z ~ 4
-// without rattlers) at the same porosity. SI units.
+// without rattlers) at the same porosity. With initial_stress > 0 the settled grains are then
+// pre-stressed to that mean stress (prestress.hpp): the radii grow by a factor s - 1 ~ 1e-4,
+// so the porosity drops by ~3 (s - 1)(1 - n) (reported). SI units.
 #pragma once
 #include <cstddef>
 #include <cstdint>
@@ -51,6 +53,16 @@ struct PackingParams {
   double jam_overlap = 1e-4;          ///< design overlap / mean radius for the stiffness, -
   int jam_steps_per_stage = 200;
   double jam_velocity_quench = 0.5;   ///< v, omega *= this at every growth stage, -
+  // Pre-stress (prestress.hpp; docs/dem.md "Pre-stress"), after the settling; off at 0: all
+  // radii scaled by one servo-controlled factor until the wall mean stress under damped
+  // Hertz-Mindlin grain contacts (rigid frictionless Hertz walls) is initial_stress.
+  double initial_stress = 0;            ///< target isotropic mean stress, Pa (0: none)
+  double prestress_friction = 0.5;      ///< grain friction while pre-stressing (the test's), -
+  double prestress_restitution = 0.1;   ///< Tsuji damping while pre-stressing, -
+  double prestress_tolerance = 0.05;    ///< relative band on the servo's stress window
+  int prestress_servo_interval = 50;    ///< steps between radius updates
+  int prestress_max_steps = 40000;
+  bool prestress_lock_rotation = true;  ///< grains do not rotate while pre-stressing (prestress.cpp)
 };
 
 struct PackingResult {
@@ -75,12 +87,21 @@ struct PackingResult {
   double mean_stress_hertz = 0;   ///< contact-virial mean stress of the final positions with
                                   ///< Hertz contacts (rigid Hertz walls), Pa
   double packing_friction = 0;    ///< friction used while packing (0 without jam), -
+  double prestress_scale = 1;     ///< radius factor of the pre-stress (1: none), -
+  int prestress_stages = 0;       ///< pre-stress servo intervals run (0: none)
+  bool prestress_converged = false;  ///< pre-stress reached initial_stress within tolerance
 };
 
 /// Generates the packing. Throws kolsky::InputError("", "dem.packing...", rule) on bad
 /// parameters or when RSA finds no place for a sphere (lower initial_solid_fraction), and
 /// psd::InvalidCurve for an invalid curve.
 PackingResult generate_packing(const PackingParams& params);
+
+/// Pre-stresses a packing generated with in.initial_stress = 0 to in.initial_stress
+/// (prestress.hpp) and retakes its census (coordination, stresses, porosity); generate_packing
+/// does this itself when initial_stress > 0, the packing cache uses it to reuse the unstressed
+/// packing.
+void prestress_result(PackingResult& res, const PackingParams& in);
 
 /// Largest overlap of grain pairs (brute force over a cell grid) and with the cylinder of
 /// diameter D around the z axis and the planes z = 0 and z = L, in m.

@@ -14,7 +14,10 @@ namespace kolsky::dem {
 namespace {
 
 namespace fs = std::filesystem;
-constexpr char kMagic[8] = {'K', 'P', 'A', 'C', 'K', '0', '0', '1'};
+// Format 002 adds the pre-stress results after the scalars; 001 files (no pre-stress) are
+// still read.
+constexpr char kMagic[8] = {'K', 'P', 'A', 'C', 'K', '0', '0', '2'};
+constexpr char kMagic001[8] = {'K', 'P', 'A', 'C', 'K', '0', '0', '1'};
 
 struct Hasher {
   std::uint64_t h = 1469598103934665603ull;  // FNV-1a 64
@@ -53,6 +56,8 @@ void write_file(const std::string& path, std::uint64_t key, PackingResult r) {
     const std::int64_t steps = r.steps, stages = r.stages, settled = r.settled;
     put(steps), put(stages), put(settled);
     for_scalars(r, [&](double& v) { put(v); });
+    const std::int64_t pre_stages = r.prestress_stages, pre_converged = r.prestress_converged;
+    put(r.prestress_scale), put(pre_stages), put(pre_converged);
     const Particles& p = r.particles;
     for (const auto* a : {&p.x, &p.v, &p.omega, &p.f, &p.torque})
       f.write(reinterpret_cast<const char*>(a->data()), static_cast<std::streamsize>(n * sizeof(Vec3)));
@@ -78,11 +83,15 @@ bool read_file(const std::string& path, std::uint64_t key, PackingResult& r) {
   f.read(magic, sizeof magic);
   std::uint64_t k = 0, n = 0;
   get(k), get(n);
-  if (!f || std::memcmp(magic, kMagic, sizeof kMagic) != 0 || k != key || n > (1ull << 32))
-    return false;
-  std::int64_t steps = 0, stages = 0, settled = 0;
+  const bool v2 = std::memcmp(magic, kMagic, sizeof kMagic) == 0;
+  const bool v1 = std::memcmp(magic, kMagic001, sizeof kMagic001) == 0;
+  if (!f || !(v1 || v2) || k != key || n > (1ull << 32)) return false;
+  std::int64_t steps = 0, stages = 0, settled = 0, pre_stages = 0, pre_converged = 0;
   get(steps), get(stages), get(settled);
   for_scalars(r, [&](double& v) { get(v); });
+  if (v2) get(r.prestress_scale), get(pre_stages), get(pre_converged);
+  r.prestress_stages = static_cast<int>(pre_stages);
+  r.prestress_converged = pre_converged != 0;
   Particles& p = r.particles;
   for (auto* a : {&p.x, &p.v, &p.omega, &p.f, &p.torque}) {
     a->resize(n);
@@ -115,6 +124,11 @@ std::string packing_cache_key(const PackingParams& q) {
   h.add(q.overlap_tolerance), h.add(q.max_settle_stages), h.add(q.max_rsa_attempts);
   h.add(q.jam), h.add(q.jam_friction), h.add(q.jam_overlap), h.add(q.jam_steps_per_stage);
   h.add(q.jam_velocity_quench);
+  if (q.initial_stress > 0) {  // unstressed packings keep the keys they had before
+    h.add(q.initial_stress), h.add(q.prestress_friction), h.add(q.prestress_restitution);
+    h.add(q.prestress_tolerance), h.add(q.prestress_servo_interval);
+    h.add(q.prestress_max_steps), h.add(q.prestress_lock_rotation);
+  }
   char buf[17];
   std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(h.h));
   return buf;
@@ -136,7 +150,16 @@ CachedPacking cached_packing(const PackingParams& params, const std::string& dir
     out.from_cache = true;
     return out;
   }
-  out.result = generate_packing(params);
+  if (params.initial_stress > 0) {
+    // The unstressed packing (the expensive part) through the cache too, so packings
+    // pre-stressed to different stresses share it.
+    PackingParams base = params;
+    base.initial_stress = 0;
+    out.result = cached_packing(base, dir).result;
+    prestress_result(out.result, params);
+  } else {
+    out.result = generate_packing(params);
+  }
   std::error_code ec;
   fs::create_directories(dir, ec);
   if (!ec) write_file(out.file, k, out.result);

@@ -1,7 +1,8 @@
 // Packing cache: generate_packing once, reuse the result on later runs (docs/dem.md, "Packing
 // cache"). A packing is stored as <dir>/packing_<key>.bin, key = 64-bit FNV-1a hash of every
-// PackingParams member (the grain-size curve's rows included), the seed and
-// kPackingFormatVersion. The file holds the PackingResult scalars and every particle field
+// PackingParams member (the grain-size curve's rows included; the pre-stress members only when
+// initial_stress > 0, so unstressed keys are unchanged), the seed and kPackingAlgorithmVersion.
+// A pre-stressed packing reuses the cached unstressed one and adds the pre-stress. The file holds the PackingResult scalars and every particle field
 // (positions, velocities, forces, radii, masses, material indices) in native binary, so a
 // cached packing is bitwise the generated one. Written to a temporary name and renamed, so an
 // interrupted or concurrent run never leaves a half file under the final name; a file that
