@@ -52,11 +52,13 @@ FaceForces DemSpecimen::forces(const FaceState& faces) {
     if (!(faces.intrusion_front > t || faces.intrusion_back > t)) {
       ++held_calls_;
       // Work of the faces on the held specimen (negative while the residual force pushes a
-      // face out), so that energy() changes by exactly the faces' work while held.
-      held_work_ += forces_0_.front * (faces.intrusion_front - held_faces_.intrusion_front) +
+      // face out), so that energy() changes by exactly the faces' work while held (none when
+      // the supports carry the preload: the bars then feel no force).
+      if (!walls_.preload_on_supports)
+        held_work_ += forces_0_.front * (faces.intrusion_front - held_faces_.intrusion_front) +
                     forces_0_.back * (faces.intrusion_back - held_faces_.intrusion_back);
       held_faces_ = faces;
-      return forces_0_;
+      return walls_.preload_on_supports ? FaceForces{0.0, 0.0} : forces_0_;
     }
     held_ = false;
     release_faces_ = faces;
@@ -70,7 +72,9 @@ FaceForces DemSpecimen::forces(const FaceState& faces) {
   } else {
     sys_.compute_forces();
   }
-  return {sys_.plane_force(front_), sys_.plane_force(back_)};
+  const FaceForces f{sys_.plane_force(front_), sys_.plane_force(back_)};
+  if (!walls_.preload_on_supports) return f;
+  return {f.front - forces_0_.front, f.back - forces_0_.back};
 }
 
 void DemSpecimen::advance(double dt) {
@@ -85,7 +89,13 @@ SpecimenEnergy DemSpecimen::energy() const {
   // order (the walls moved by the same intrusions): it jumps by the second-order remainder.
   if (held_) return {0.0, held_work_};
   const DemEnergy e = sys_.energy();
-  return {e.kinetic, e.elastic - elastic_0_ + e.dissipated};
+  // With the preload on the supports, the faces' work on the grains is split: F0 du comes
+  // from the supports, only (F - F0) du from the bars; the ledger counts the bars' share.
+  const double supports = walls_.preload_on_supports
+                              ? forces_0_.front * faces_.intrusion_front +
+                                    forces_0_.back * faces_.intrusion_back
+                              : 0.0;
+  return {e.kinetic, e.elastic - elastic_0_ + e.dissipated - supports};
 }
 
 double DemSpecimen::mean_strain() const {

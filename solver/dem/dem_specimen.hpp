@@ -29,6 +29,11 @@ struct SpecimenWalls {
   /// Off by default (existing scenes unchanged); the Chapter 4 scenes turn it on.
   bool hold_until_loaded = false;
   double hold_threshold = 1e-12;  ///< m, face intrusion that releases the hold
+  /// Preload on the supports (docs/dem.md, "Pre-stressed specimens"): the wall forces of the
+  /// initial state F0 (a pre-stressed packing's seating load) are held by the bar supports and
+  /// the gauges are zeroed with it, so forces() hands the bars only the change F - F0 (linear
+  /// superposition in the elastic bars). Off: the bars carry the full wall forces from t = 0.
+  bool preload_on_supports = false;
 };
 
 class DemSpecimen {
@@ -64,6 +69,9 @@ class DemSpecimen {
   const DemSystem& system() const { return sys_; }
   int front_plane() const { return front_; }
   int back_plane() const { return back_; }
+
+  /// Wall forces of the initial state (front, back), N: the preload when preload_on_supports.
+  FaceForces initial_forces() const { return forces_0_; }
 
   /// Checkpoint and restart (dem_state.hpp; defined in dem_state.cpp); restore_state needs a
   /// specimen built from the same parameters.

@@ -181,10 +181,13 @@ dem::DemSpecimenParams read_dem_specimen(JsonReader& r, const std::string& base_
     r.resolve("specimen.packing_cache", d.packing_cache);
   }
   d.walls.hold_until_loaded = r.boolean("specimen.hold_until_loaded");
+  d.walls.preload_on_supports = r.boolean("specimen.preload_on_supports");
+  d.packing.initial_stress = r.number("specimen.initial_stress");
   const double g = r.number("specimen.grain_shear_modulus");
   const double nu = r.number("specimen.grain_poisson_ratio");
   d.packing.material = dem::Material{2.0 * g * (1.0 + nu), nu, r.number("specimen.grain_density")};
   d.contact.friction = r.number("specimen.grain_friction");
+  d.packing.prestress_friction = d.contact.friction;  // pre-stressed under the test's friction
   d.contact.restitution = r.number("specimen.restitution");
   d.options.rolling.factor_per_reference_step = r.number("specimen.rolling_factor");
   const auto wall = dem::linear_spring(r.number("specimen.wall_normal_stiffness"),

@@ -246,6 +246,15 @@ std::vector<ParamSpec> build_table() {
         kNoRange,
         "Hold the grains as packed (no DEM step) until a face moves into the specimen (docs/dem.md)",
         "specimen.model=dem");
+  s.add(VT::number, "specimen.initial_stress", pack.initial_stress, "Pa", kNonNegative,
+        "Isotropic mean stress the packed grains are pre-stressed to before the test (0: none; "
+        "docs/dem.md, Pre-stress)",
+        "specimen.model=dem");
+  s.add(VT::boolean, "specimen.preload_on_supports", dem::SpecimenWalls{}.preload_on_supports,
+        "-", kNoRange,
+        "The bar supports hold the initial wall forces and the gauges are zeroed with them: the "
+        "bars carry only the change (docs/dem.md, Pre-stressed specimens)",
+        "specimen.model=dem");
   s.add(VT::number, "specimen.grain_shear_modulus", grain.shear_modulus(), "Pa", kPositive,
         "Grain shear modulus G (Table 4.1: 30 GPa)", "specimen.model=dem");
   s.add(VT::number, "specimen.grain_poisson_ratio", grain.poisson_ratio, "-", kPoisson,
