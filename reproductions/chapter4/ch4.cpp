@@ -16,6 +16,17 @@ nlohmann::json read_json(const std::string& path) {
   return nlohmann::json::parse(f);
 }
 
+std::vector<double> parse_list(const std::string& text) {
+  std::vector<double> out;
+  for (std::string all = text; !all.empty();) {
+    const auto comma = all.find(',');
+    const std::string v = all.substr(0, comma);
+    all = comma == std::string::npos ? "" : all.substr(comma + 1);
+    if (!v.empty()) out.push_back(std::stod(v));
+  }
+  return out;
+}
+
 std::vector<double> scaled(const std::vector<double>& v, double f, long n) {
   const long m = n < 0 ? static_cast<long>(v.size()) : std::min<long>(n, v.size());
   std::vector<double> out(m);

@@ -47,6 +47,8 @@ struct Measures {
 Measures measure(const CaseResult& c, double lo_stress, double mid_stress, double limit);
 
 nlohmann::json read_json(const std::string& path);
+/// "0,0.999,1" -> {0, 0.999, 1}; "" -> {} (environment overrides of the driver's lists).
+std::vector<double> parse_list(const std::string& text);
 std::vector<double> scaled(const std::vector<double>& v, double f, long n = -1);
 /// Reference value of a target in targets.json (its "value", in the file's unit).
 double reference_value(const nlohmann::json& targets, const std::string& id);

@@ -1,0 +1,110 @@
+#include "chapter4/upscaling.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+
+#include "common/format.hpp"
+#include "scene/scene.hpp"
+
+namespace kolsky::ch4 {
+
+namespace {
+
+// sigma_t at strain e on the curve (strain, stress)[0, n), linear between samples; the strain
+// is made monotone by its running maximum (it may dip by round-off before the arrival).
+double stress_at(const std::vector<double>& strain, const std::vector<double>& stress, long n,
+                 double e) {
+  double prev_e = -1e300, prev_s = 0;
+  for (long i = 0; i < n; ++i) {
+    const double ei = std::max(strain[i], prev_e);
+    if (ei >= e) {
+      if (i == 0 || ei == prev_e) return stress[i];
+      return prev_s + (stress[i] - prev_s) * (e - prev_e) / (ei - prev_e);
+    }
+    prev_e = ei, prev_s = stress[i];
+  }
+  return NAN;  // beyond the curve
+}
+
+}  // namespace
+
+std::vector<UpscalingRow> upscaling_study(const nlohmann::json& j, const std::string& scene_path,
+                                          const std::string& dir, double k,
+                                          const CaseResult& reference, const Measures& ref_m,
+                                          const std::vector<double>& ns, double lo, double limit) {
+  std::vector<UpscalingRow> rows;
+  const auto& rh = reference.h;
+  for (double n : ns) {
+    UpscalingRow row;
+    row.n = n;
+    nlohmann::json jn = j;
+    jn["specimen"]["upscale"] = n;
+    try {
+      const auto sc = scene::parse_scene(jn, scene_path, dir);
+      const auto& dp = std::get<dem::DemSpecimenParams>(sc.spec.specimen);
+      const auto t0 = std::chrono::steady_clock::now();
+      const dem::CachedPacking pk = dem::cached_packing(dp.packing, dp.packing_cache);
+      row.pack_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+      row.packed_now = !pk.from_cache;
+    } catch (const std::exception& e) {
+      row.failure = e.what();
+      rows.push_back(row);
+      continue;
+    }
+    const CaseResult c = run_case(jn, scene_path, dir, k, "N = " + repro::fmt("%g", n));
+    row.grains = c.grains;
+    row.case_s = c.wall_s;
+    row.dt = c.dt;
+    row.ok = c.ok;
+    row.failure = c.failure;
+    if (c.ok && ref_m.i_lo >= 0 && ref_m.i_end > ref_m.i_lo) {
+      const Measures m = measure(c, lo, 3e6, limit);
+      row.modulus = m.modulus_back;
+      const long end = m.i_end > 0 ? m.i_end : static_cast<long>(c.h.t.size());
+      row.strain.assign(c.h.strain.begin(), c.h.strain.begin() + end);
+      row.stress.assign(c.h.stress_back.begin(), c.h.stress_back.begin() + end);
+      const long nc = static_cast<long>(c.h.strain.size());
+      double sum = 0;
+      long cnt = 0;
+      for (long i = ref_m.i_lo; i < ref_m.i_end; ++i) {
+        const double s = stress_at(c.h.strain, c.h.stress_back, nc, rh.strain[i]);
+        if (!std::isfinite(s)) continue;
+        const double d = std::abs(s - rh.stress_back[i]);
+        sum += d * d, ++cnt;
+        row.max = std::max(row.max, d);
+      }
+      row.rms = cnt > 0 ? std::sqrt(sum / cnt) : NAN;
+    }
+    std::printf("upscaling N = %g: %zu grains, %s, case %.1f s, packing %.1f s%s, RMS deviation %.2f MPa\n",
+                n, row.grains, row.ok ? "ok" : row.failure.c_str(), row.case_s, row.pack_s,
+                row.packed_now ? " (generated)" : " (cache)", row.rms / 1e6);
+    rows.push_back(row);
+  }
+  return rows;
+}
+
+std::string upscaling_table(const CaseResult& reference, const Measures& ref_m, double reference_n,
+                            const std::vector<UpscalingRow>& rows) {
+  using repro::fmt;
+  std::string t =
+      "| N | grains | dt (ns) | case wall (s) | packing wall (s) | M 1-10 MPa | RMS dev. | max dev. |\n"
+      "|---|---|---|---|---|---|---|---|\n";
+  t += "| " + fmt("%g", reference_n) + " (reference) | " + std::to_string(reference.grains) + " | " +
+       fmt("%.2f", reference.dt * 1e9) + " | " + fmt("%.1f", reference.wall_s) + " | - | " +
+       fmt("%.1f MPa", ref_m.modulus_back / 1e6) + " | 0 | 0 |\n";
+  for (const auto& r : rows) {
+    if (!r.ok) {
+      t += "| " + fmt("%g", r.n) + " | failed: " + r.failure + " | | | | | | |\n";
+      continue;
+    }
+    t += "| " + fmt("%g", r.n) + " | " + std::to_string(r.grains) + " | " + fmt("%.2f", r.dt * 1e9) +
+         " | " + fmt("%.1f", r.case_s) + " | " + fmt("%.1f", r.pack_s) + (r.packed_now ? "" : " (cache)") +
+         " | " + fmt("%.1f MPa", r.modulus / 1e6) + " | " + fmt("%.2f MPa", r.rms / 1e6) + " | " +
+         fmt("%.2f MPa", r.max / 1e6) + " |\n";
+  }
+  return t;
+}
+
+}  // namespace kolsky::ch4
