@@ -204,7 +204,10 @@ void DemSystem::gather() {
 void DemSystem::compute_forces(double dt) {
   if (particles_changed_) refresh_after_edit();
   if (needs_rebuild()) rebuild();
-  std::visit([&](const auto& law) { pair_forces(law, dt); }, law_);
+  if (const auto* hm = std::get_if<HertzMindlin>(&law_); hm && opt_.batched_hertz_mindlin)
+    hertz_mindlin_pair_forces(*hm, dt);
+  else
+    std::visit([&](const auto& law) { pair_forces(law, dt); }, law_);
   for (int k = 0; k < static_cast<int>(planes_.size()); ++k)
     std::visit([&](const auto& law) { plane_forces(law, k, dt); }, planes_[k].wall.law);
   for (int k = 0; k < static_cast<int>(tubes_.size()); ++k)

@@ -31,6 +31,10 @@ struct DemOptions {
   double skin_over_min_radius = 0.5;  ///< Verlet skin as a multiple of the smallest radius
   double dt_safety = 0.3;             ///< stable dt = safety x the smallest limit (see header)
   RollingRetardation rolling;
+  /// Hertz-Mindlin grain pairs through the batched, branch-free kernel
+  /// (hertz_mindlin_batch.hpp; bitwise the same results). false: the per-contact kernel, kept
+  /// as the reference the tests compare against.
+  bool batched_hertz_mindlin = true;
 };
 
 /// Energy ledger (J). kinetic + elastic + dissipated - wall_work is conserved up to the
@@ -129,6 +133,7 @@ class DemSystem {
 
   void compute_forces(double dt);
   template <class Law> void pair_forces(const Law& law, double dt);
+  void hertz_mindlin_pair_forces(const HertzMindlin& law, double dt);  // dem_forces_batched.cpp
   template <class Law> void plane_forces(const Law& law, int k, double dt);
   template <class Law> void tube_forces(const Law& law, int k, double dt);
   void gather();
