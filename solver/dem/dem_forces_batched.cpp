@@ -38,7 +38,6 @@ void DemSystem::hertz_mindlin_pair_forces(const HertzMindlin& law, double dt) {
   double* diss = dissipated_.data();
   const int* slot = pair_slot_.data();
   ContactOut* out = pair_out_.out.data();
-  double* elastic = pair_out_.elastic.data();
   unsigned char* active = pair_out_.active.data();
   const HertzMindlinConstants* table = constants.data();
   constexpr int kCap = HertzMindlinBatch::kCapacity;
@@ -79,7 +78,8 @@ void DemSystem::hertz_mindlin_pair_forces(const HertzMindlin& law, double dt) {
         const Vec3 d = x[j] - x[i];
         const double rsum = rad[i] + rad[j];
         const bool touch = !(norm2(d) >= rsum * rsum);
-        active[slot[k]] = touch;
+        if (active[k] && !touch) out[slot[k]] = ContactOut{};  // separated: slot reads zero
+        active[k] = touch;
         touching[m] = k;
         m += touch;
         // A separated contact forgets its tangential spring (read first: most are zero).
@@ -111,8 +111,7 @@ void DemSystem::hertz_mindlin_pair_forces(const HertzMindlin& law, double dt) {
         T += Vec3{b.tix[t], b.tiy[t], b.tiz[t]};
         D += 0.5 * b.dissipated[t];
         const int sk = slot[k];
-        out[sk] = {-force, {b.tjx[t], b.tjy[t], b.tjz[t]}, 0.5 * b.dissipated[t]};
-        elastic[sk] = b.elastic[t];
+        out[sk] = {-force, {b.tjx[t], b.tjy[t], b.tjz[t]}, 0.5 * b.dissipated[t], b.elastic[t]};
         hist[k] = {b.hx[t], b.hy[t], b.hz[t]};
       }
     }
