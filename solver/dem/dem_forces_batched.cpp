@@ -41,6 +41,7 @@ void DemSystem::hertz_mindlin_pair_forces(const HertzMindlin& law, double dt) {
   unsigned char* active = pair_out_.active.data();
   const HertzMindlinConstants* table = constants.data();
   constexpr int kCap = HertzMindlinBatch::kCapacity;
+  constexpr int kAhead = 16;  // pairs: about the latency of an L3 hit over a pair's work
 
   // Each thread takes a contiguous block of owners, as a static schedule would; the results
   // do not depend on the split (each contact is evaluated alone, each owner summed in order).
@@ -75,6 +76,12 @@ void DemSystem::hertz_mindlin_pair_forces(const HertzMindlin& law, double dt) {
       int m = 0;
       for (int k = k0; k < k1; ++k) {
         const int i = pi[k], j = pj[k];
+        // Partners a grid layer away (thousands of grains) miss the L2 cache: request their
+        // position some pairs ahead, and now what (2) and (4) will need if the pair touches.
+        if (k + kAhead < k_end) __builtin_prefetch(&x[pj[k + kAhead]]);
+        __builtin_prefetch(&v[j]);
+        __builtin_prefetch(&w[j]);
+        __builtin_prefetch(&out[slot[k]], 1);
         const Vec3 d = x[j] - x[i];
         const double rsum = rad[i] + rad[j];
         const bool touch = !(norm2(d) >= rsum * rsum);
