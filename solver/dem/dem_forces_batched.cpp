@@ -85,7 +85,10 @@ void DemSystem::hertz_mindlin_pair_forces(const HertzMindlin& law, double dt) {
         const Vec3 d = x[j] - x[i];
         const double rsum = rad[i] + rad[j];
         const bool touch = !(norm2(d) >= rsum * rsum);
-        if (active[k] && !touch) out[slot[k]] = ContactOut{};  // separated: slot reads zero
+        // Separated since the last step: its slot must read zero. One branch on the rare
+        // event, not two on touching and on having touched (each about 50/50).
+        const bool separated = active[k] > static_cast<unsigned char>(touch);
+        if (separated) out[slot[k]] = ContactOut{};
         active[k] = touch;
         touching[m] = k;
         m += touch;
