@@ -30,7 +30,6 @@ void DemSystem::pair_forces(const Law& law, double dt) {
   double* diss = dissipated_.data();
   const int* slot = pair_slot_.data();
   ContactOut* out = pair_out_.out.data();
-  double* elastic = pair_out_.elastic.data();
   unsigned char* active = pair_out_.active.data();
 #pragma omp parallel for schedule(static) if (n >= kParallelMin)
   for (std::ptrdiff_t i = 0; i < n; ++i) {
@@ -45,7 +44,8 @@ void DemSystem::pair_forces(const Law& law, double dt) {
       const double rsum = ri + rad[j];
       const double d2 = norm2(d);
       if (d2 >= rsum * rsum) {
-        active[slot[k]] = 0;
+        if (active[k]) out[slot[k]] = ContactOut{};  // separated: its slot reads zero
+        active[k] = 0;
         // A separated contact forgets its tangential spring (read first: most are zero).
         if (hist[k].x != 0 || hist[k].y != 0 || hist[k].z != 0) hist[k] = Vec3{};
         continue;
@@ -67,9 +67,8 @@ void DemSystem::pair_forces(const Law& law, double dt) {
       T += ai * nf + r.rolling_torque;
       D += 0.5 * r.dissipated;
       const int sk = slot[k];
-      out[sk] = {-r.force, aj * nf - r.rolling_torque, 0.5 * r.dissipated};
-      elastic[sk] = r.elastic_energy;
-      active[sk] = 1;
+      out[sk] = {-r.force, aj * nf - r.rolling_torque, 0.5 * r.dissipated, r.elastic_energy};
+      active[k] = 1;
     }
     f[i] = F;
     tq[i] = T;
@@ -123,8 +122,7 @@ void DemSystem::plane_forces(const Law& law, int k, double dt) {
     const ContactResult r =
         wall_contact(law.pair(p_.material[i]), overlap, -nw, v_wall, p_.radius[i], p_.radius[i],
                      p_.mass[i], p_.v[i], p_.omega[i], wall_history_[c], dt, torque);
-    out.out[c] = {r.force, torque, r.dissipated};
-    out.elastic[c] = r.elastic_energy;
+    out.out[c] = {r.force, torque, r.dissipated, r.elastic_energy};
     wall_normal_[c] = r.normal_force;
     out.active[c] = 1;
   }
@@ -157,8 +155,7 @@ void DemSystem::tube_forces(const Law& law, int k, double dt) {
     const ContactResult res =
         wall_contact(law.pair(p_.material[i]), overlap, n, t.u_dot * n, r_eff, r, p_.mass[i],
                      p_.v[i], p_.omega[i], wall_history_[c], dt, torque);
-    out.out[c] = {res.force, torque, res.dissipated};
-    out.elastic[c] = res.elastic_energy;
+    out.out[c] = {res.force, torque, res.dissipated, res.elastic_energy};
     wall_normal_[c] = res.normal_force;
     out.active[c] = 1;
   }
@@ -180,8 +177,7 @@ void DemSystem::gather() {
   for (std::ptrdiff_t q = 0; q < n; ++q) {
     Vec3 F = f[q], T = tq[q];
     double D = 0;
-    for (int s = pfirst[q]; s < pfirst[q + 1]; ++s) {
-      if (!po.active[s]) continue;
+    for (int s = pfirst[q]; s < pfirst[q + 1]; ++s) {  // zero where not touching
       const ContactOut& o = po.out[s];
       F += o.force;
       T += o.torque;
@@ -204,7 +200,10 @@ void DemSystem::gather() {
 void DemSystem::compute_forces(double dt) {
   if (particles_changed_) refresh_after_edit();
   if (needs_rebuild()) rebuild();
-  std::visit([&](const auto& law) { pair_forces(law, dt); }, law_);
+  if (const auto* hm = std::get_if<HertzMindlin>(&law_); hm && opt_.batched_hertz_mindlin)
+    hertz_mindlin_pair_forces(*hm, dt);
+  else
+    std::visit([&](const auto& law) { pair_forces(law, dt); }, law_);
   for (int k = 0; k < static_cast<int>(planes_.size()); ++k)
     std::visit([&](const auto& law) { plane_forces(law, k, dt); }, planes_[k].wall.law);
   for (int k = 0; k < static_cast<int>(tubes_.size()); ++k)

@@ -20,8 +20,7 @@ double RollingRetardation::factor(double dt) const {
 }
 
 void DemSystem::ContactStore::resize(std::size_t n) {
-  out.resize(n);
-  elastic.resize(n);
+  out.assign(n, ContactOut{});
   active.assign(n, 0);
 }
 
@@ -306,10 +305,10 @@ void DemSystem::build_wall_candidates() {
 DemEnergy DemSystem::energy() const {
   DemEnergy e;
   e.kinetic = p_.kinetic_energy();
-  for (std::size_t k = 0; k < pairs_.size(); ++k)  // slot order
-    if (pair_out_.active[k]) e.elastic += pair_out_.elastic[k];
+  for (std::size_t s = 0; s < pairs_.size(); ++s)  // slot order; zero where not touching
+    e.elastic += pair_out_.out[s].elastic;
   for (std::size_t c = 0; c < wall_particle_.size(); ++c)
-    if (wall_out_.active[c]) e.elastic += wall_out_.elastic[c];
+    if (wall_out_.active[c]) e.elastic += wall_out_.out[c].elastic;
   for (const auto& t : tubes_) {
     e.kinetic += 0.5 * t.mass * t.u_dot * t.u_dot;
     e.elastic += 0.5 * t.stiffness * t.u * t.u;

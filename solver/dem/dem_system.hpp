@@ -31,6 +31,10 @@ struct DemOptions {
   double skin_over_min_radius = 0.5;  ///< Verlet skin as a multiple of the smallest radius
   double dt_safety = 0.3;             ///< stable dt = safety x the smallest limit (see header)
   RollingRetardation rolling;
+  /// Hertz-Mindlin grain pairs through the batched, branch-free kernel
+  /// (hertz_mindlin_batch.hpp; bitwise the same results). false: the per-contact kernel, kept
+  /// as the reference the tests compare against.
+  bool batched_hertz_mindlin = true;
 };
 
 /// Energy ledger (J). kinetic + elastic + dissipated - wall_work is conserved up to the
@@ -115,20 +119,28 @@ class DemSystem {
     double u = 0, u_dot = 0, u_at_build = 0, force = 0, stiffness = 0, mass = 0;
   };
   // Per-contact outputs. ContactOut is what the gathering particle receives (for a pair: the
-  // partner j, since i sums its own side while computing; for a wall: the grain).
-  struct ContactOut {
+  // partner j, since i sums its own side while computing; for a wall: the grain), and the
+  // contact's stored energy: one 64-byte cache line per contact, so that the scattered store
+  // of a pair's partner side touches one line, not two or three.
+  struct alignas(64) ContactOut {
     Vec3 force, torque;
     double dissipated = 0;
+    double elastic = 0;
   };
+  // For walls, active[c] flags a touching contact c. For pairs, active[k] is indexed by pair
+  // (written in order while the owners are swept) and the slots of pairs that do not touch
+  // hold zeros (cleared when a contact separates, and at every rebuild), so that gather() and
+  // energy() add every slot without a branch: adding +0 to a sum that started at +0 leaves it
+  // bitwise unchanged (such a sum is never -0).
   struct ContactStore {
     std::vector<ContactOut> out;
-    std::vector<double> elastic;
     std::vector<unsigned char> active;
-    void resize(std::size_t n);
+    void resize(std::size_t n);  // all inactive, all zero
   };
 
   void compute_forces(double dt);
   template <class Law> void pair_forces(const Law& law, double dt);
+  void hertz_mindlin_pair_forces(const HertzMindlin& law, double dt);  // dem_forces_batched.cpp
   template <class Law> void plane_forces(const Law& law, int k, double dt);
   template <class Law> void tube_forces(const Law& law, int k, double dt);
   void gather();

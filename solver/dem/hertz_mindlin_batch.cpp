@@ -1,0 +1,116 @@
+// Branch-free Hertz-Mindlin batch kernel (see hertz_mindlin_batch.hpp). Each line mirrors
+// HertzMindlinPair::force() and tangential_force() in contact_pieces.hpp; a branch there is a
+// select here, with both sides computed (a side that is not selected may hold NaN or inf in
+// its lane: harmless, it is discarded). solver/CMakeLists.txt compiles this file with
+// -ffp-contract=off: a fused multiply-add would round differently from the scalar kernel.
+#include "dem/hertz_mindlin_batch.hpp"
+
+#include <cmath>
+
+namespace kolsky::dem {
+
+HertzMindlinConstants batch_constants(const HertzMindlinPair& p) {
+  return {(4.0 / 3.0) * p.normal.e_star, 2.0 * p.normal.e_star,
+          1.8257418583505538 * p.damping.beta, 8.0 * p.tangential.g_star,
+          p.tangential.friction, p.tangential_damping_scale};
+}
+
+// One clone per instruction set, chosen once at load time by the CPU (GCC function
+// multiversioning), so every thread and every run on a machine takes the same one; without
+// contraction all clones give the same bits. The build itself stays portable (no -march).
+[[gnu::target_clones("avx512f", "avx2", "default")]]
+void evaluate(HertzMindlinBatch& b, int count, double dt) {
+  for (int t = 0; t < count; ++t) {
+    // Geometry (dem_forces.cpp): n = d/|d|, delta = r_i + r_j - |d|, levers a = r - delta/2.
+    const double dx = b.dx[t], dy = b.dy[t], dz = b.dz[t];
+    const double ri = b.ri[t], rj = b.rj[t];
+    const double rsum = ri + rj;
+    const double dist = std::sqrt(dx * dx + dy * dy + dz * dz);
+    const double inv = 1.0 / dist;
+    const bool apart = dist > 0;
+    const double nx = apart ? inv * dx : 0.0, ny = apart ? inv * dy : 0.0,
+                 nz = apart ? inv * dz : 1.0;
+    const double overlap = rsum - dist;
+    const double ai = ri - 0.5 * overlap, aj = rj - 0.5 * overlap;
+    const double sx = ai * b.wix[t] + aj * b.wjx[t], sy = ai * b.wiy[t] + aj * b.wjy[t],
+                 sz = ai * b.wiz[t] + aj * b.wjz[t];
+    const double vx = b.dvx[t] - (sy * nz - sz * ny), vy = b.dvy[t] - (sz * nx - sx * nz),
+                 vz = b.dvz[t] - (sx * ny - sy * nx);
+    const double r_eff = ri * rj / rsum;
+    const double m_eff = b.mi[t] * b.mj[t] / (b.mi[t] + b.mj[t]);
+
+    // Hertz normal piece, Tsuji dashpot, normal_force().
+    const double a = std::sqrt(r_eff * overlap);
+    const double f_el = b.k_force[t] * a * overlap;
+    const double s_n = b.k_stiffness[t] * a;
+    const double c_n = b.k_damping[t] * std::sqrt(s_n * m_eff);
+    const double vn = vx * nx + vy * ny + vz * nz;
+    const double stored_n = 0.0 + 0.4 * f_el * overlap;
+    const double lost_n = 0.0 + c_n * vn * vn * dt;
+    const double fn = f_el - c_n * vn;
+    const double k_t = b.k_shear[t] * a;
+    const double c_t = c_n * b.k_tdamp[t];
+
+    // tangential_force(): rotate the history onto the tangent plane, keeping its magnitude.
+    const double hx = b.hx[t], hy = b.hy[t], hz = b.hz[t];
+    const double xn = hx * nx + hy * ny + hz * nz;
+    const double before = hx * hx + hy * hy + hz * hz;
+    const double px = hx - xn * nx, py = hy - xn * ny, pz = hz - xn * nz;
+    const double after = px * px + py * py + pz * pz;
+    const double keep = std::sqrt(before / after);
+    const bool rotate = xn != 0, rescale = after > 0;
+    const double qx = rotate ? (rescale ? px * keep : px) : hx;
+    const double qy = rotate ? (rescale ? py * keep : py) : hy;
+    const double qz = rotate ? (rescale ? pz * keep : pz) : hz;
+    const double vtn = vx * nx + vy * ny + vz * nz;
+    const double tx = vx - vtn * nx, ty = vy - vtn * ny, tz = vz - vtn * nz;
+    const double ux = qx + dt * tx, uy = qy + dt * ty, uz = qz + dt * tz;
+    const double limit = b.k_friction[t] * f_el;
+    const double limit2 = limit * limit;
+    const double sfx = k_t * ux, sfy = k_t * uy, sfz = k_t * uz;
+    const double spring2 = sfx * sfx + sfy * sfy + sfz * sfz;
+
+    // Sliding: scale back to the Coulomb limit; L x slip dissipated.
+    const bool slide = spring2 > limit2;
+    const double spring = std::sqrt(spring2);
+    const double scale = limit / spring;
+    const double lost_slide = limit * (spring - limit) / k_t;
+    // Sticking: the dashpot, cut to the largest s in [0, 1] with |ft + s damp| = L.
+    const double gx = c_t * tx, gy = c_t * ty, gz = c_t * tz;
+    const double ox = sfx + gx, oy = sfy + gy, oz = sfz + gz;
+    const bool cap = ox * ox + oy * oy + oz * oz > limit2;
+    const double b2 = gx * gx + gy * gy + gz * gz, ab = sfx * gx + sfy * gy + sfz * gz;
+    const double disc = ab * ab - b2 * (spring2 - limit2);
+    const double s_cap = (-ab + std::sqrt(0.0 < disc ? disc : 0.0)) / b2;
+    const double s = cap ? s_cap : 1.0;
+    const double lost_stick = s * c_t * (tx * tx + ty * ty + tz * tz) * dt;
+    const bool damped = c_t > 0;
+
+    const double ftx = slide ? sfx * scale : (damped ? sfx + s * gx : sfx);
+    const double fty = slide ? sfy * scale : (damped ? sfy + s * gy : sfy);
+    const double ftz = slide ? sfz * scale : (damped ? sfz + s * gz : sfz);
+    const double hnx = slide ? ux * scale : ux, hny = slide ? uy * scale : uy,
+                 hnz = slide ? uz * scale : uz;
+    const double lost = slide ? lost_n + lost_slide : (damped ? lost_n + lost_stick : lost_n);
+    b.hx[t] = hnx;
+    b.hy[t] = hny;
+    b.hz[t] = hnz;
+    b.elastic[t] = stored_n + 0.5 * k_t * (hnx * hnx + hny * hny + hnz * hnz);
+    b.dissipated[t] = lost;
+
+    // Force on i and the torques about both centres (no rolling moment: +0, -0 as there).
+    const double fx = ftx - fn * nx, fy = fty - fn * ny, fz = ftz - fn * nz;
+    const double cx = ny * fz - nz * fy, cy = nz * fx - nx * fz, cz = nx * fy - ny * fx;
+    b.fx[t] = fx;
+    b.fy[t] = fy;
+    b.fz[t] = fz;
+    b.tix[t] = ai * cx + 0.0;
+    b.tiy[t] = ai * cy + 0.0;
+    b.tiz[t] = ai * cz + 0.0;
+    b.tjx[t] = aj * cx - 0.0;
+    b.tjy[t] = aj * cy - 0.0;
+    b.tjz[t] = aj * cz - 0.0;
+  }
+}
+
+}  // namespace kolsky::dem

@@ -1,0 +1,48 @@
+// Hertz-Mindlin grain-pair contacts evaluated a batch at a time, for SIMD (docs/dem.md,
+// "Performance"). The per-contact kernel HertzMindlinPair::force() branches twice per contact
+// (sliding or sticking, the tangential dashpot's Coulomb cap) and the pair loop once more
+// (touching or not, ~50/50 and unpredictable in a dense packing); none of these vectorize. Here
+// the touching contacts are first packed into a structure of arrays, then one branch-free loop
+// evaluates the same law over all of them, every branch computed and selected per lane, so the
+// compiler can use 4 or 8 lanes for the roots and divisions that dominate the cost.
+// The arithmetic is that of HertzMindlinPair::force() (contact_pieces.hpp) operation for
+// operation, in the same order, and the file is compiled without FMA contraction; IEEE
+// +, -, *, / and sqrt round the same in any vector width, so the results are bitwise those of
+// the per-contact kernel (test_dem_batch.cpp checks this on a busy scene).
+#pragma once
+#include <vector>
+
+#include "dem/contact_hertz_mindlin.hpp"
+
+namespace kolsky::dem {
+
+/// Constants of one material pair in the form the batch uses; each is the same product the
+/// per-contact kernel forms first (left to right), so the results do not change.
+struct HertzMindlinConstants {
+  double force = 0;      ///< 4/3 E*: F_el = force a delta
+  double stiffness = 0;  ///< 2 E*: S_n = stiffness a
+  double damping = 0;    ///< 2 sqrt(5/6) beta: c_n = damping sqrt(S_n m*)
+  double shear = 0;      ///< 8 G*: k_t = shear a
+  double friction = 0;   ///< mu
+  double tangential_damping_scale = 0;  ///< c_t / c_n
+};
+
+HertzMindlinConstants batch_constants(const HertzMindlinPair& p);
+
+/// Inputs and outputs of up to kCapacity touching contacts, one array per scalar. Inputs:
+/// d = x_j - x_i, radii, masses, dv = v_j - v_i, both spins, the history, the constants.
+/// Outputs: the force on i, the torques on i and j, the dissipated and stored energies and the
+/// updated history (written over the input history).
+struct HertzMindlinBatch {
+  static constexpr int kCapacity = 128;
+  template <class T> using Lane = T[kCapacity];
+  alignas(64) Lane<double> dx, dy, dz, ri, rj, mi, mj, dvx, dvy, dvz;
+  alignas(64) Lane<double> wix, wiy, wiz, wjx, wjy, wjz, hx, hy, hz;
+  alignas(64) Lane<double> k_force, k_stiffness, k_damping, k_shear, k_friction, k_tdamp;
+  alignas(64) Lane<double> fx, fy, fz, tix, tiy, tiz, tjx, tjy, tjz, dissipated, elastic;
+};
+
+/// Evaluates contacts [0, count) of b (count <= kCapacity) over the step dt (s).
+void evaluate(HertzMindlinBatch& b, int count, double dt);
+
+}  // namespace kolsky::dem
