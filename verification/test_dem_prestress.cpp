@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <numbers>
 #include <string>
 
 #include "core/errors.hpp"
@@ -16,8 +17,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// The Song curve upscaled by n, jammed in a D x L cylinder (1,275 grains at N = 6 in the
-// 19.1 x 9.3 mm Song specimen).
+// The Song curve upscaled by n, jammed in a D x L cylinder (~1,500 grains at N = 2 in 6 x 4 mm:
+// the grain size of the Ch. 4 full scale, where the wall law matters, see the preload test).
 PackingParams jammed(double n, double diameter, double length, std::uint64_t seed) {
   const io::CsvTable t = io::read_csv(std::string(KOLSKY_SOURCE_DIR) +
                                       "/data/digitized/chapter4/song2009_psd_reconstructed.csv");
@@ -34,8 +35,10 @@ PackingParams jammed(double n, double diameter, double length, std::uint64_t see
 
 const PackingParams& stressed_params() {
   static const PackingParams p = [] {
-    PackingParams q = jammed(6.0, 0.0191, 0.0093, 1);  // the Ch. 4 smoke specimen
+    PackingParams q = jammed(2.0, 0.006, 0.004, 7);  // ~1,500 grains of the N = 2 size
     q.initial_stress = 65e3;
+    q.prestress_wall_normal_stiffness = 2.6e6;  // the Table 4.1 walls of the test
+    q.prestress_wall_shear_stiffness = 1.6e6;
     return q;
   }();
   return p;
@@ -71,7 +74,7 @@ TEST(DemPrestress, ReachesTheTargetStressInEquilibrium) {
   // assembly (stage-to-stage fluctuations of 5-10 % measured on 450-1,300 grains).
   EXPECT_NEAR(r.mean_stress_hertz / r.mean_stress, 1.0, 0.15);
   // The radius factor stays within 1e-3 of 1 (Hertz overlaps at 65 kPa are ~1e-4 of a
-  // radius; this N = 6 packing starts at ~120 kPa, so the servo shrinks it slightly).
+  // radius; measured s - 1 = 5e-5 here, 3e-4 for the N = 2 Song specimen).
   EXPECT_NEAR(r.prestress_scale, 1.0, 1e-3);
 }
 
@@ -147,8 +150,13 @@ DemSpecimen specimen(bool on_supports, bool hold) {
 TEST(DemPrestress, PreloadOnSupportsHandsTheBarsTheChangeOnly) {
   DemSpecimen plain = specimen(false, false), supported = specimen(true, false);
   const FaceForces f0 = supported.initial_forces();
-  EXPECT_GT(f0.front, 0.0);  // the pre-stress loads the end walls
-  EXPECT_GT(f0.back, 0.0);
+  // The pre-stress loads the end walls with about the target stress: it was reached against
+  // these wall springs, so the wall layer is in equilibrium with them (rigid Hertz walls left
+  // it at 4-5x the stress on the springs: measured 5.4 / 4.0 front / back). 30 %: the axial
+  // stress of a small specimen differs from the mean stress by its anisotropy.
+  const double area = std::numbers::pi * 0.25 * stressed_params().diameter * stressed_params().diameter;
+  EXPECT_NEAR(f0.front / area / stressed_params().initial_stress, 1.0, 0.3);
+  EXPECT_NEAR(f0.back / area / stressed_params().initial_stress, 1.0, 0.3);
   const double dt = 0.5 * plain.stable_dt();
   FaceState faces;
   for (int k = 0; k < 2000; ++k) {

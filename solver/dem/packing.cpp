@@ -380,6 +380,8 @@ PackingResult generate_packing(const PackingParams& in) {
         "must be in (0, 1)");
   check(in.prestress_servo_interval >= 1, "prestress_servo_interval", "must be >= 1");
   check(in.prestress_max_steps >= 1, "prestress_max_steps", "must be >= 1");
+  check(in.prestress_wall_normal_stiffness >= 0, "prestress_wall_normal_stiffness", "must be >= 0");
+  check(in.prestress_wall_shear_stiffness >= 0, "prestress_wall_shear_stiffness", "must be >= 0");
   const std::vector<Material> materials{in.material};
   validate(materials);
   if (in.initial_stress > 0) {  // the unstressed packing, then the pre-stress

@@ -63,6 +63,10 @@ struct PackingParams {
   int prestress_servo_interval = 50;    ///< steps between radius updates
   int prestress_max_steps = 40000;
   bool prestress_lock_rotation = true;  ///< grains do not rotate while pre-stressing (prestress.cpp)
+  /// Walls while pre-stressing: frictionless linear springs k_n, k_s (N/m; the test's walls),
+  /// or rigid frictionless Hertz walls when k_n = 0.
+  double prestress_wall_normal_stiffness = 0;
+  double prestress_wall_shear_stiffness = 0;
 };
 
 struct PackingResult {

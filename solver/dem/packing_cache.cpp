@@ -128,6 +128,7 @@ std::string packing_cache_key(const PackingParams& q) {
     h.add(q.initial_stress), h.add(q.prestress_friction), h.add(q.prestress_restitution);
     h.add(q.prestress_tolerance), h.add(q.prestress_servo_interval);
     h.add(q.prestress_max_steps), h.add(q.prestress_lock_rotation);
+    h.add(q.prestress_wall_normal_stiffness), h.add(q.prestress_wall_shear_stiffness);
   }
   char buf[17];
   std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(h.h));

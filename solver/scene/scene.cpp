@@ -195,6 +195,9 @@ dem::DemSpecimenParams read_dem_specimen(JsonReader& r, const std::string& base_
                                        r.number("specimen.wall_friction"));
   d.walls.end_law = wall;
   d.walls.tube_law = wall;
+  // Pre-stressed against the test's wall springs (docs/dem.md, Pre-stress).
+  d.packing.prestress_wall_normal_stiffness = r.number("specimen.wall_normal_stiffness");
+  d.packing.prestress_wall_shear_stiffness = r.number("specimen.wall_shear_stiffness");
   return d;
 }
 
