@@ -11,7 +11,7 @@
 
 #include "dem/dem_specimen_params.hpp"
 #include "dem/dem_state.hpp"
-#include "io/csv.hpp"
+#include "song_packing.hpp"
 
 namespace kolsky::dem {
 namespace {
@@ -19,17 +19,7 @@ namespace {
 namespace fs = std::filesystem;
 
 PackingParams small_jammed(std::uint64_t seed) {
-  const io::CsvTable t = io::read_csv(std::string(KOLSKY_SOURCE_DIR) +
-                                      "/data/digitized/chapter4/song2009_psd_reconstructed.csv");
-  PackingParams p;
-  p.curve = psd::upscale({t.column("diameter_m"), t.column("percent_passing")}, 2.0);
-  p.diameter = 0.004;
-  p.length = 0.003;
-  p.seed = seed;
-  p.material = Material{78e9, 0.3, 2650};
-  p.jam = true;
-  p.max_settle_stages = 200;
-  return p;
+  return testing::song_jammed(2.0, 0.004, 0.003, seed);
 }
 
 const PackingResult& packing() {

@@ -10,32 +10,17 @@
 
 #include "core/errors.hpp"
 #include "dem/dem_specimen_params.hpp"
-#include "io/csv.hpp"
+#include "song_packing.hpp"
 
 namespace kolsky::dem {
 namespace {
 
 namespace fs = std::filesystem;
 
-// The Song curve upscaled by n, jammed in a D x L cylinder (~1,500 grains at N = 2 in 6 x 4 mm:
-// the grain size of the Ch. 4 full scale, where the wall law matters, see the preload test).
-PackingParams jammed(double n, double diameter, double length, std::uint64_t seed) {
-  const io::CsvTable t = io::read_csv(std::string(KOLSKY_SOURCE_DIR) +
-                                      "/data/digitized/chapter4/song2009_psd_reconstructed.csv");
-  PackingParams p;
-  p.curve = psd::upscale({t.column("diameter_m"), t.column("percent_passing")}, n);
-  p.diameter = diameter;
-  p.length = length;
-  p.seed = seed;
-  p.material = Material{78e9, 0.3, 2650};
-  p.jam = true;
-  p.max_settle_stages = 200;
-  return p;
-}
-
 const PackingParams& stressed_params() {
   static const PackingParams p = [] {
-    PackingParams q = jammed(2.0, 0.006, 0.004, 7);  // ~1,500 grains of the N = 2 size
+    PackingParams q = testing::song_jammed(2.0, 0.006, 0.004, 7);  // ~1,500 grains, the N = 2
+                                                                  // size: the wall law matters there
     q.initial_stress = 65e3;
     q.prestress_wall_normal_stiffness = 2.6e6;  // the Table 4.1 walls of the test
     q.prestress_wall_shear_stiffness = 1.6e6;
@@ -123,7 +108,7 @@ TEST(DemPrestress, DeterministicAndCachedBitwise) {
 }
 
 TEST(DemPrestress, RefusesBadInput) {
-  PackingParams in = jammed(2.0, 0.004, 0.003, 1);
+  PackingParams in = testing::song_jammed(2.0, 0.004, 0.003, 1);
   in.initial_stress = -1;
   EXPECT_THROW(generate_packing(in), InputError);
   in.initial_stress = 1e4;

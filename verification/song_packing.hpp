@@ -1,0 +1,30 @@
+// Jammed packings of the reconstructed Song et al. (2009) grain-size curve (the dissertation's
+// Ch. 4 sand) in small cylinders, shared by the DEM tests that need a realistic specimen.
+#pragma once
+#include <cstdint>
+#include <string>
+
+#include "dem/packing.hpp"
+#include "io/csv.hpp"
+
+namespace kolsky::testing {
+
+/// The curve upscaled by n, jammed (frictional growth, quenched settling, at most 200
+/// settling stages) in a cylinder of the given diameter and length (m), grains E 78 GPa,
+/// nu 0.3, rho 2650 kg/m^3, porosity 0.44.
+inline dem::PackingParams song_jammed(double n, double diameter, double length,
+                                      std::uint64_t seed) {
+  const io::CsvTable t = io::read_csv(std::string(KOLSKY_SOURCE_DIR) +
+                                      "/data/digitized/chapter4/song2009_psd_reconstructed.csv");
+  dem::PackingParams p;
+  p.curve = psd::upscale({t.column("diameter_m"), t.column("percent_passing")}, n);
+  p.diameter = diameter;
+  p.length = length;
+  p.seed = seed;
+  p.material = dem::Material{78e9, 0.3, 2650};
+  p.jam = true;
+  p.max_settle_stages = 200;
+  return p;
+}
+
+}  // namespace kolsky::testing
