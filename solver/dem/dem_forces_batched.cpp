@@ -78,7 +78,12 @@ void DemSystem::hertz_mindlin_pair_forces(const HertzMindlin& law, double dt) {
         const int i = pi[k], j = pj[k];
         // Partners a grid layer away (thousands of grains) miss the L2 cache: request their
         // position some pairs ahead, and now what (2) and (4) will need if the pair touches.
-        if (k + kAhead < k_end) __builtin_prefetch(&x[pj[k + kAhead]]);
+        // The histories are read in (2) and written in (4) for touching pairs only, so the
+        // hardware sees no steady stream: request them here too, in pair order.
+        if (k + kAhead < k_end) {
+          __builtin_prefetch(&x[pj[k + kAhead]]);
+          __builtin_prefetch(&hist[k + kAhead], 1);
+        }
         __builtin_prefetch(&v[j]);
         __builtin_prefetch(&w[j]);
         __builtin_prefetch(&out[slot[k]], 1);
