@@ -78,23 +78,31 @@ void DemSystem::hertz_mindlin_pair_forces(const HertzMindlin& law, double dt) {
         const int i = pi[k], j = pj[k];
         // Partners a grid layer away (thousands of grains) miss the L2 cache: request their
         // position some pairs ahead, and now what (2) and (4) will need if the pair touches.
-        if (k + kAhead < k_end) __builtin_prefetch(&x[pj[k + kAhead]]);
+        // The histories are read in (2) and written in (4) for touching pairs only, so the
+        // hardware sees no steady stream: request them here too, in pair order.
+        if (k + kAhead < k_end) {
+          __builtin_prefetch(&x[pj[k + kAhead]]);
+          __builtin_prefetch(&hist[k + kAhead], 1);
+        }
         __builtin_prefetch(&v[j]);
         __builtin_prefetch(&w[j]);
         __builtin_prefetch(&out[slot[k]], 1);
         const Vec3 d = x[j] - x[i];
         const double rsum = rad[i] + rad[j];
         const bool touch = !(norm2(d) >= rsum * rsum);
-        // Separated since the last step: its slot must read zero. One branch on the rare
-        // event, not two on touching and on having touched (each about 50/50).
+        // Separated since the last step: its slot must read zero, and it forgets its
+        // tangential spring. Only a pair active at the last evaluation can hold a non-zero
+        // history (rebuild() marks carried histories active), so the history is read on this
+        // rare branch only, not for every listed pair (read first: most are zero).
         const bool separated = active[k] > static_cast<unsigned char>(touch);
-        if (separated) out[slot[k]] = ContactOut{};
+        if (separated) {
+          out[slot[k]] = ContactOut{};
+          const Vec3& h = hist[k];
+          if (h.x != 0 || h.y != 0 || h.z != 0) hist[k] = Vec3{};
+        }
         active[k] = touch;
         touching[m] = k;
         m += touch;
-        // A separated contact forgets its tangential spring (read first: most are zero).
-        const Vec3& h = hist[k];
-        if ((h.x != 0 || h.y != 0 || h.z != 0) && !touch) hist[k] = Vec3{};
       }
       // (2) Inputs of the touching pairs.
       for (int t = 0; t < m; ++t) {

@@ -242,6 +242,13 @@ bool DemSystem::needs_rebuild() const {
 void DemSystem::rebuild() {
   pairs_ = build_pair_list(p_.x, p_.radius, skin_, pairs_);
   pair_out_.resize(pairs_.size());
+  // A carried non-zero history counts as active: the batched sweep clears the history of a
+  // pair only when it goes from active to not touching (dem_forces_batched.cpp). The slots
+  // stay zero; every evaluation rewrites active[] before anything reads it.
+  for (std::size_t k = 0; k < pairs_.size(); ++k) {
+    const Vec3& h = pairs_.history[k];
+    pair_out_.active[k] = h.x != 0 || h.y != 0 || h.z != 0;
+  }
   build_wall_candidates();
   const int n = static_cast<int>(p_.size());
   // Counting sort of the pairs by partner (then pair order) into slots, and of the wall

@@ -18,6 +18,13 @@ struct CellGrid {
   double cell = 1;
   int nx = 1, ny = 1, nz = 1;
   std::vector<int> start, items;  // particles of cell c: items[start[c] .. start[c+1])
+  // Position and radius of items[s] at s: the scan of a row of cells then reads one
+  // contiguous run instead of gathering x[j] and r[j] from all over the arrays.
+  struct Item {
+    Vec3 x;
+    double r;
+  };
+  std::vector<Item> item;
 
   int clamp_index(double u, int n) const {
     const double c = std::floor(u / cell);
@@ -29,7 +36,7 @@ struct CellGrid {
   }
 };
 
-CellGrid make_grid(const std::vector<Vec3>& x, double cell) {
+CellGrid make_grid(const std::vector<Vec3>& x, const std::vector<double>& r, double cell) {
   CellGrid g;
   Vec3 lo{std::numeric_limits<double>::max(), std::numeric_limits<double>::max(),
           std::numeric_limits<double>::max()};
@@ -67,6 +74,8 @@ CellGrid make_grid(const std::vector<Vec3>& x, double cell) {
   g.items.resize(x.size());
   std::vector<int> fill(g.start.begin(), g.start.end() - 1);
   for (std::size_t i = 0; i < x.size(); ++i) g.items[fill[cell_of[i]]++] = static_cast<int>(i);
+  g.item.resize(x.size());
+  for (std::size_t s = 0; s < x.size(); ++s) g.item[s] = {x[g.items[s]], r[g.items[s]]};
   return g;
 }
 
@@ -79,7 +88,7 @@ PairList build_pair_list(const std::vector<Vec3>& x, const std::vector<double>& 
   out.first.assign(static_cast<std::size_t>(n) + 1, 0);
   if (n == 0) return out;
   const double r_max = *std::max_element(r.begin(), r.end());
-  const CellGrid g = make_grid(x, 0.5 * (2 * r_max + skin));
+  const CellGrid g = make_grid(x, r, 0.5 * (2 * r_max + skin));
 
   // Each thread scans a contiguous block of particles into its own buffer; the buffers are
   // concatenated in block order, so the list is the same for every thread count.
@@ -104,16 +113,16 @@ PairList build_pair_list(const std::vector<Vec3>& x, const std::vector<double>& 
       const int z1 = g.clamp_index(p.z + reach - g.lo.z, g.nz);
       const std::size_t before = mine.size();
       for (int cz = z0; cz <= z1; ++cz)
-        for (int cy = y0; cy <= y1; ++cy)
-          for (int cx = x0; cx <= x1; ++cx) {
-            const int c = (cz * g.ny + cy) * g.nx + cx;
-            for (int s = g.start[c]; s < g.start[c + 1]; ++s) {
-              const int j = g.items[s];
-              if (j <= i) continue;
-              const double cut = r[i] + r[j] + skin;
-              if (norm2(x[j] - p) < cut * cut) mine.push_back(j);
-            }
+        for (int cy = y0; cy <= y1; ++cy) {
+          // Cells x0..x1 of a row are consecutive, so are their items.
+          const int row = (cz * g.ny + cy) * g.nx;
+          for (int s = g.start[row + x0], s1 = g.start[row + x1 + 1]; s < s1; ++s) {
+            const int j = g.items[s];
+            if (j <= i) continue;
+            const double cut = r[i] + g.item[s].r + skin;
+            if (norm2(g.item[s].x - p) < cut * cut) mine.push_back(j);
           }
+        }
       std::sort(mine.begin() + static_cast<std::ptrdiff_t>(before), mine.end());
       count[i] = static_cast<int>(mine.size() - before);
     }
