@@ -9,6 +9,7 @@
 #include <numbers>
 #include <vector>
 
+#include "dem/contact_damping.hpp"
 #include "dem/contact_hertz_mindlin.hpp"
 #include "dem/contact_linear.hpp"
 #include "dem/dem_system.hpp"
@@ -18,14 +19,13 @@ namespace kolsky::dem {
 
 namespace {
 
-// Radii s r0, masses and inertias to match (and the grains at rest if `rest`).
-void scale_grains(Particles& q, const std::vector<double>& r0, double s, double rho, bool rest) {
+// Radii s r0, masses and inertias to match.
+void scale_grains(Particles& q, const std::vector<double>& r0, double s, double rho) {
   for (std::size_t i = 0; i < q.size(); ++i) {
     const double r = s * r0[i];
     q.radius[i] = r;
     q.mass[i] = 4.0 / 3.0 * std::numbers::pi * r * r * r * rho;
     q.inertia[i] = 0.4 * q.mass[i] * r * r;
-    if (rest) q.v[i] = q.omega[i] = Vec3{};
   }
 }
 
@@ -50,11 +50,7 @@ double first_step(const PackingParams& in, const std::vector<double>& r0) {
 PrestressOutcome prestress_packing(Particles& p, const PackingParams& in) {
   const double R = in.diameter / 2, L = in.length, target = in.initial_stress;
   const std::vector<Material> materials{in.material};
-  Material rigid = in.material;
-  rigid.youngs_modulus = std::numeric_limits<double>::infinity();
-  // Frictionless walls, as while jamming: wall friction would hold the wall zone looser.
   const HertzMindlinParams grains{in.prestress_friction, in.prestress_restitution};
-  const HertzMindlinParams walls{0.0, in.prestress_restitution};
   std::vector<double> r0(p.radius);
   const std::vector<int> material_index = p.material;
   Particles q = p;
@@ -67,19 +63,21 @@ PrestressOutcome prestress_packing(Particles& p, const PackingParams& in) {
   DemOptions opt;
   opt.rolling.factor_per_reference_step = in.prestress_lock_rotation ? 0.0 : 1.0;
   DemSystem sys(std::move(q), materials, HertzMindlin(materials, grains), opt);
-  // The test's linear wall springs when given (frictionless, damped like the grains), so the
-  // wall layer is in equilibrium with the walls it will meet in the test: rigid Hertz walls
-  // hold a grain at a different overlap, and the Table 4.1 springs (2.6e6 N/m) then push the
-  // wall layer with ~6x its Hertz force at release (measured: -0.28 MPa interface stress jump
-  // at N = 2). The stiff springs lower the stable step (8.7 ns against 45 ns at N = 2).
+  // Frictionless walls, as while jamming (wall friction would hold the wall zone looser): the
+  // test's linear springs when given, damped like the grains, so the wall layer is in
+  // equilibrium with the walls it will meet in the test. Against rigid Hertz walls a grain sits
+  // at another overlap, and the Table 4.1 springs (2.6e6 N/m) then pushed the wall layer with
+  // 4-5x the target stress (test_dem_prestress; -0.28 MPa interface jump at the N = 2 release).
   if (in.prestress_wall_normal_stiffness > 0) {
-    const double zeta = std::log(in.prestress_restitution);  // restitution -> damping ratio
-    const double ratio = -zeta / std::sqrt(zeta * zeta + std::numbers::pi * std::numbers::pi);
     add_packing_walls(sys, R, L,
                       linear_spring(in.prestress_wall_normal_stiffness,
-                                    in.prestress_wall_shear_stiffness, 0.0, ratio, 0.0));
+                                    in.prestress_wall_shear_stiffness, 0.0,
+                                    damping_ratio_from_restitution(in.prestress_restitution), 0.0));
   } else {
-    add_packing_walls(sys, R, L, HertzMindlinWall(materials, rigid, walls));
+    Material rigid = in.material;
+    rigid.youngs_modulus = std::numeric_limits<double>::infinity();
+    add_packing_walls(sys, R, L,
+                      HertzMindlinWall(materials, rigid, {0.0, in.prestress_restitution}));
   }
   const bool verbose = std::getenv("KOLSKY_PACKING_VERBOSE") != nullptr;
 
@@ -126,7 +124,7 @@ PrestressOutcome prestress_packing(Particles& p, const PackingParams& in) {
                    2.0 * static_cast<double>(sys.n_contacts()) / static_cast<double>(r0.size()));
     if (out.converged) break;
     s = std::clamp(s + gain * (1 - p_now / target), 0.99, 1.01);
-    scale_grains(sys.mutable_particles(), r0, s, in.material.density, false);
+    scale_grains(sys.mutable_particles(), r0, s, in.material.density);
   }
   out.scale = s;
   out.stages = static_cast<int>(history.size());
