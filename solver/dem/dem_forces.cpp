@@ -4,6 +4,7 @@
 // Geometry: n from i to j, overlap delta = r_i + r_j - |x_j - x_i|, contact point at
 // a_i = r_i - delta/2 from i (a_j = r_j - delta/2 from j, so both points coincide); for a wall
 // the contact point lies on the wall surface, a = r - delta.
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -13,9 +14,12 @@ namespace kolsky::dem {
 
 template <class Law>
 void DemSystem::pair_forces(const Law& law, double dt) {
-  // One pass per owner particle i over its pairs k (j > i): i's side is summed in registers
-  // and written once; j's side is stored for gather().
-  const auto n = static_cast<std::ptrdiff_t>(p_.size());
+  // One pass per owner particle i over its pairs k (j > i), in fixed blocks of opt_.owner_block
+  // owners: i's side is summed in registers and added once; j's side is added to j at once if
+  // j lies in i's block (as the partner's owners all do, in pair order, before j's own sum),
+  // else stored in j's slot for gather(). So each grain's sums have one order for any number
+  // of threads, and the batched kernel (dem_forces_batched.cpp) keeps the same order.
+  const int n = static_cast<int>(p_.size());
   const int* first = pairs_.first.data();
   const int* pj = pairs_.j.data();
   Vec3* hist = pairs_.history.data();
@@ -31,48 +35,64 @@ void DemSystem::pair_forces(const Law& law, double dt) {
   const int* slot = pair_slot_.data();
   ContactOut* out = pair_out_.out.data();
   unsigned char* active = pair_out_.active.data();
+  double* stored = pair_out_.elastic.data();
+  const int block = opt_.owner_block, n_blocks = n / block + (n % block != 0);
 #pragma omp parallel for schedule(static) if (n >= kParallelMin)
-  for (std::ptrdiff_t i = 0; i < n; ++i) {
-    const Vec3 xi = x[i], vi = v[i], wi = w[i];
-    const double ri = rad[i], mi = mass[i];
-    const int mat_i = mat[i];
-    Vec3 F{}, T{};
-    double D = 0;
-    for (int k = first[i]; k < first[i + 1]; ++k) {
-      const int j = pj[k];
-      const Vec3 d = x[j] - xi;
-      const double rsum = ri + rad[j];
-      const double d2 = norm2(d);
-      if (d2 >= rsum * rsum) {
-        if (active[k]) out[slot[k]] = ContactOut{};  // separated: its slot reads zero
-        active[k] = 0;
-        // A separated contact forgets its tangential spring (read first: most are zero).
-        if (hist[k].x != 0 || hist[k].y != 0 || hist[k].z != 0) hist[k] = Vec3{};
-        continue;
+  for (int blk = 0; blk < n_blocks; ++blk) {
+    const int i0 = blk * block, i1 = i0 + std::min(n - i0, block);
+    for (int q = i0; q < i1; ++q) f[q] = tq[q] = Vec3{};
+    for (int i = i0; i < i1; ++i) {
+      const Vec3 xi = x[i], vi = v[i], wi = w[i];
+      const double ri = rad[i], mi = mass[i];
+      const int mat_i = mat[i];
+      Vec3 F{}, T{};
+      double D = 0;
+      for (int k = first[i]; k < first[i + 1]; ++k) {
+        const int j = pj[k], sk = slot[k];
+        const Vec3 d = x[j] - xi;
+        const double rsum = ri + rad[j];
+        const double d2 = norm2(d);
+        if (d2 >= rsum * rsum) {
+          if (active[k]) {  // separated: its slot and stored energy read zero
+            if (sk >= 0) out[sk] = ContactOut{};
+            stored[k] = 0;
+          }
+          active[k] = 0;
+          // A separated contact forgets its tangential spring (read first: most are zero).
+          if (hist[k].x != 0 || hist[k].y != 0 || hist[k].z != 0) hist[k] = Vec3{};
+          continue;
+        }
+        const double dist = std::sqrt(d2);
+        ContactGeometry g;
+        g.normal = dist > 0 ? (1.0 / dist) * d : Vec3{0, 0, 1};
+        g.overlap = rsum - dist;
+        const double ai = ri - 0.5 * g.overlap, aj = rad[j] - 0.5 * g.overlap;
+        g.v_contact = v[j] - vi - cross(ai * wi + aj * w[j], g.normal);
+        g.omega_rel = wi - w[j];
+        g.r_i = ri;
+        g.r_j = rad[j];
+        g.r_eff = ri * rad[j] / rsum;
+        g.m_eff = mi * mass[j] / (mi + mass[j]);
+        const ContactResult r = law.pair(mat_i, mat[j]).force(g, hist[k], dt);
+        const Vec3 nf = cross(g.normal, r.force);
+        F += r.force;
+        T += ai * nf + r.rolling_torque;
+        D += 0.5 * r.dissipated;
+        const Vec3 torque_j = aj * nf - r.rolling_torque;
+        if (sk < 0) {  // partner in this block: added now, in pair order
+          f[j] += -r.force;
+          tq[j] += torque_j;
+          diss[j] += 0.5 * r.dissipated;
+        } else {
+          out[sk] = {-r.force, torque_j, 0.5 * r.dissipated, 0.0};
+        }
+        stored[k] = r.elastic_energy;
+        active[k] = 1;
       }
-      const double dist = std::sqrt(d2);
-      ContactGeometry g;
-      g.normal = dist > 0 ? (1.0 / dist) * d : Vec3{0, 0, 1};
-      g.overlap = rsum - dist;
-      const double ai = ri - 0.5 * g.overlap, aj = rad[j] - 0.5 * g.overlap;
-      g.v_contact = v[j] - vi - cross(ai * wi + aj * w[j], g.normal);
-      g.omega_rel = wi - w[j];
-      g.r_i = ri;
-      g.r_j = rad[j];
-      g.r_eff = ri * rad[j] / rsum;
-      g.m_eff = mi * mass[j] / (mi + mass[j]);
-      const ContactResult r = law.pair(mat_i, mat[j]).force(g, hist[k], dt);
-      const Vec3 nf = cross(g.normal, r.force);
-      F += r.force;
-      T += ai * nf + r.rolling_torque;
-      D += 0.5 * r.dissipated;
-      const int sk = slot[k];
-      out[sk] = {-r.force, aj * nf - r.rolling_torque, 0.5 * r.dissipated, r.elastic_energy};
-      active[k] = 1;
+      f[i] += F;  // after the sides it received as a partner within its block
+      tq[i] += T;
+      diss[i] += D;
     }
-    f[i] = F;
-    tq[i] = T;
-    diss[i] += D;
   }
 }
 
@@ -162,8 +182,8 @@ void DemSystem::tube_forces(const Law& law, int k, double dt) {
 }
 
 void DemSystem::gather() {
-  // Adds to each particle what pair_forces stored for it as a partner (contiguous slots), then
-  // its wall contacts, in list order.
+  // Adds to each particle what pair_forces stored for it as a partner of an owner in another
+  // block (contiguous slots, pair order), then its wall contacts, in list order.
   const auto n = static_cast<std::ptrdiff_t>(p_.size());
   const int* pfirst = partner_first_.data();
   const int* wfirst = wall_first_of_.data();

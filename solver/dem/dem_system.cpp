@@ -22,6 +22,7 @@ double RollingRetardation::factor(double dt) const {
 void DemSystem::ContactStore::resize(std::size_t n) {
   out.assign(n, ContactOut{});
   active.assign(n, 0);
+  elastic.assign(n, 0.0);
 }
 
 DemSystem::DemSystem(Particles particles, std::vector<Material> materials, ContactLaw law,
@@ -47,6 +48,7 @@ DemSystem::DemSystem(Particles particles, std::vector<Material> materials, Conta
     throw InputError("", "dem.skin_over_min_radius", "must be > 0");
   if (!(opt_.dt_safety > 0 && opt_.dt_safety <= 1))
     throw InputError("", "dem.dt_safety", "must be in (0, 1]");
+  if (!(opt_.owner_block > 0)) throw InputError("", "dem.owner_block", "must be > 0");
   const double k = opt_.rolling.factor_per_reference_step;
   if (!(k >= 0 && k <= 1)) throw InputError("", "dem.rolling.factor", "must be in [0, 1]");
   if (!(opt_.rolling.reference_dt > 0))
@@ -251,14 +253,20 @@ void DemSystem::rebuild() {
   }
   build_wall_candidates();
   const int n = static_cast<int>(p_.size());
-  // Counting sort of the pairs by partner (then pair order) into slots, and of the wall
-  // contacts by grain.
+  // Counting sort into slots, by partner (then pair order), of the pairs whose partner lies in
+  // another owner block; a partner in the owner's block gets its side in the sweep (slot -1).
   partner_first_.assign(static_cast<std::size_t>(n) + 1, 0);
-  for (int jj : pairs_.j) ++partner_first_[jj + 1];
+  const int block = opt_.owner_block;
+  auto crosses = [&](std::size_t k) {
+    return pairs_.i[k] / block != pairs_.j[k] / block;
+  };
+  for (std::size_t k = 0; k < pairs_.size(); ++k)
+    if (crosses(k)) ++partner_first_[pairs_.j[k] + 1];
   for (int q = 0; q < n; ++q) partner_first_[q + 1] += partner_first_[q];
   pair_slot_.resize(pairs_.size());
   std::vector<int> fill(partner_first_.begin(), partner_first_.end() - 1);
-  for (std::size_t k = 0; k < pairs_.size(); ++k) pair_slot_[k] = fill[pairs_.j[k]]++;
+  for (std::size_t k = 0; k < pairs_.size(); ++k)
+    pair_slot_[k] = crosses(k) ? fill[pairs_.j[k]]++ : -1;
   wall_first_of_.assign(static_cast<std::size_t>(n) + 1, 0);
   for (int q : wall_particle_) ++wall_first_of_[q + 1];
   for (int q = 0; q < n; ++q) wall_first_of_[q + 1] += wall_first_of_[q];
@@ -312,8 +320,7 @@ void DemSystem::build_wall_candidates() {
 DemEnergy DemSystem::energy() const {
   DemEnergy e;
   e.kinetic = p_.kinetic_energy();
-  for (std::size_t s = 0; s < pairs_.size(); ++s)  // slot order; zero where not touching
-    e.elastic += pair_out_.out[s].elastic;
+  for (double u : pair_out_.elastic) e.elastic += u;  // pair order; zero where not touching
   for (std::size_t c = 0; c < wall_particle_.size(); ++c)
     if (wall_out_.active[c]) e.elastic += wall_out_.out[c].elastic;
   for (const auto& t : tubes_) {

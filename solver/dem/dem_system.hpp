@@ -35,6 +35,13 @@ struct DemOptions {
   /// (hertz_mindlin_batch.hpp; bitwise the same results). false: the per-contact kernel, kept
   /// as the reference the tests compare against.
   bool batched_hertz_mindlin = true;
+  /// The grain-pair sweep runs over fixed blocks of this many owner grains (threads take whole
+  /// blocks): a pair whose partner lies in the owner's block adds the partner's side to it
+  /// directly, in pair order, instead of through a 64-byte slot that gather() reads back.
+  /// Results depend on it (the order of each grain's sums), never on the thread count.
+  /// Spatially sorted grains have most partners within a few thousand indices (docs/dem.md,
+  /// "Performance"). Must be > 0.
+  int owner_block = 2048;
 };
 
 /// Energy ledger (J). kinetic + elastic + dissipated - wall_work is conserved up to the
@@ -127,14 +134,16 @@ class DemSystem {
     double dissipated = 0;
     double elastic = 0;
   };
-  // For walls, active[c] flags a touching contact c. For pairs, active[k] is indexed by pair
-  // (written in order while the owners are swept) and the slots of pairs that do not touch
-  // hold zeros (cleared when a contact separates, and at every rebuild), so that gather() and
-  // energy() add every slot without a branch: adding +0 to a sum that started at +0 leaves it
-  // bitwise unchanged (such a sum is never -0).
+  // For walls, active[c] flags a touching contact c. For pairs, active[k] and elastic[k] (the
+  // stored energy; out[].elastic stays 0) are indexed by pair (written in order while the
+  // owners are swept), and the slots and energies of pairs that do not touch hold zeros
+  // (cleared when a contact separates, and at every rebuild), so that gather() and energy()
+  // add every one without a branch: adding +0 to a sum that started at +0 leaves it bitwise
+  // unchanged (such a sum is never -0). Only the first (cross-block) slots of out are used.
   struct ContactStore {
     std::vector<ContactOut> out;
     std::vector<unsigned char> active;
+    std::vector<double> elastic;  // pairs only
     void resize(std::size_t n);  // all inactive, all zero
   };
 
@@ -173,7 +182,8 @@ class DemSystem {
   std::vector<Vec3> wall_history_;
   ContactStore wall_out_;
   std::vector<double> wall_normal_;  // normal force of each wall contact, N
-  // Gather lists. Pair k stores its partner's side in slot pair_slot_[k] of pair_out_; the
+  // Gather lists. Pair k whose partner lies in another owner block (DemOptions::owner_block; else
+  // pair_slot_[k] = -1) stores its partner's side in slot pair_slot_[k] of pair_out_; the
   // slots of particle q are [partner_first_[q], partner_first_[q+1]) (pair order), so the
   // gather streams through memory. Wall contacts of q: wall_entry_[wall_first_of_[q] ...].
   std::vector<int> pair_slot_, partner_first_, wall_first_of_, wall_entry_;
