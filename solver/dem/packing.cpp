@@ -17,6 +17,7 @@
 #include "dem/assembly.hpp"
 #include "dem/contact_linear.hpp"
 #include "dem/dem_system.hpp"
+#include "dem/packing_internal.hpp"
 #include "dem/packing_walls.hpp"
 #include "dem/prestress.hpp"
 #include "psd/sampling.hpp"
@@ -27,35 +28,6 @@ namespace {
 
 constexpr double kPi = std::numbers::pi;
 
-// Uniform cell grid over the cylinder's bounding box [-R, R]^2 x [0, L].
-struct CellGrid {
-  double cell, R, L;
-  int nx, nz;
-  std::vector<std::vector<int>> cells;
-
-  CellGrid(double cell_size, double radius, double length)
-      : cell(cell_size), R(radius), L(length) {
-    nx = std::max(1, static_cast<int>(2 * R / cell) + 1);
-    nz = std::max(1, static_cast<int>(L / cell) + 1);
-    cells.resize(static_cast<std::size_t>(nx) * nx * nz);
-  }
-  int ix(double u) const { return std::clamp(static_cast<int>((u + R) / cell), 0, nx - 1); }
-  int iz(double u) const { return std::clamp(static_cast<int>(u / cell), 0, nz - 1); }
-  std::vector<int>& at(int x, int y, int z) {
-    return cells[(static_cast<std::size_t>(z) * nx + y) * nx + x];
-  }
-  void insert(const Vec3& c, int id) { at(ix(c.x), ix(c.y), iz(c.z)).push_back(id); }
-  // Calls f(q) for every id in the 27 cells around c; stops when f returns false.
-  template <class F> bool visit(const Vec3& c, F&& f) {
-    const int cx = ix(c.x), cy = ix(c.y), cz = iz(c.z);
-    for (int z = std::max(0, cz - 1); z <= std::min(nz - 1, cz + 1); ++z)
-      for (int y = std::max(0, cy - 1); y <= std::min(nx - 1, cy + 1); ++y)
-        for (int x = std::max(0, cx - 1); x <= std::min(nx - 1, cx + 1); ++x)
-          for (int q : at(x, y, z))
-            if (!f(q)) return false;
-    return true;
-  }
-};
 
 void check(bool ok, const std::string& field, const std::string& rule) {
   if (!ok) throw InputError("", "dem.packing." + field, rule);
@@ -65,127 +37,6 @@ void set_radius(Particles& p, std::size_t i, double r, double rho) {
   p.radius[i] = r;
   p.mass[i] = 4.0 / 3.0 * kPi * r * r * r * rho;
   p.inertia[i] = 0.4 * p.mass[i] * r * r;
-}
-
-}  // namespace
-
-double max_packing_overlap(const Particles& p, double diameter, double length) {
-  const double R = diameter / 2;
-  double r_max = 0;
-  for (double r : p.radius) r_max = std::max(r_max, r);
-  double worst = 0;
-  if (p.size() == 0) return 0;
-  CellGrid grid(2 * r_max, R, length);
-  for (std::size_t i = 0; i < p.size(); ++i) {
-    const Vec3& c = p.x[i];
-    const double r = p.radius[i];
-    worst = std::max({worst, r - c.z, c.z + r - length, std::hypot(c.x, c.y) + r - R});
-    grid.visit(c, [&](int q) {
-      const double d = r + p.radius[q];
-      const double dist2 = norm2(p.x[q] - c);
-      if (dist2 < d * d) worst = std::max(worst, d - std::sqrt(dist2));
-      return true;
-    });
-    grid.insert(c, static_cast<int>(i));
-  }
-  return worst;
-}
-
-
-namespace {
-
-// Contact census of a packing: per-grain contact counts (pairs and walls), the largest
-// overlap, and the trace of the contact virial sum_c f_c l_c with a normal force law
-// f(delta, r_i, r_j) for grain pairs (l = centre distance) and g(delta, r) for the walls
-// (l = r - delta, centre to contact point). Brute force on a cell grid, in index order.
-struct Census {
-  std::vector<int> contacts;  // per grain: touching grains + touching walls
-  std::size_t pairs = 0, walls = 0;
-  double virial = 0;          // sum f l, N m
-};
-
-template <class PairForce, class WallForce>
-Census contact_census(const Particles& p, double diameter, double length, PairForce&& fp,
-                      WallForce&& fw) {
-  Census c;
-  c.contacts.assign(p.size(), 0);
-  if (p.size() == 0) return c;
-  const double R = diameter / 2;
-  double r_max = 0;
-  for (double r : p.radius) r_max = std::max(r_max, r);
-  CellGrid grid(2 * r_max, R, length);
-  for (std::size_t i = 0; i < p.size(); ++i) {
-    const Vec3& x = p.x[i];
-    const double r = p.radius[i];
-    const double gaps[3] = {x.z - r, length - x.z - r, R - std::hypot(x.x, x.y) - r};
-    for (double g : gaps)
-      if (g < 0) {
-        ++c.contacts[i];
-        ++c.walls;
-        c.virial += fw(-g, r) * (r + g);
-      }
-    grid.visit(x, [&](int q) {
-      const double dd = r + p.radius[q];
-      const double dist2 = norm2(p.x[q] - x);
-      if (dist2 < dd * dd) {
-        const double dist = std::sqrt(dist2);
-        ++c.contacts[i];
-        ++c.contacts[q];
-        ++c.pairs;
-        c.virial += fp(dd - dist, r, p.radius[q]) * dist;
-      }
-      return true;
-    });
-    grid.insert(x, static_cast<int>(i));
-  }
-  return c;
-}
-
-// Grains with fewer than two contacts carry no load; removing them can strand others, so the
-// removal is repeated until none is left. Returns (coordination of the rest counting walls,
-// fraction removed).
-std::pair<double, double> without_rattlers(const Particles& p, double diameter, double length) {
-  const std::size_t n = p.size();
-  const double R = diameter / 2;
-  // Contact lists (pairs only; wall contacts as a count).
-  std::vector<std::vector<int>> nb(n);
-  std::vector<int> walls(n, 0);
-  double r_max = 0;
-  for (double r : p.radius) r_max = std::max(r_max, r);
-  CellGrid grid(2 * r_max, R, length);
-  for (std::size_t i = 0; i < n; ++i) {
-    const Vec3& x = p.x[i];
-    const double r = p.radius[i];
-    walls[i] = (x.z < r) + (length - x.z < r) + (R - std::hypot(x.x, x.y) < r);
-    grid.visit(x, [&](int q) {
-      const double dd = r + p.radius[q];
-      if (norm2(p.x[q] - x) < dd * dd) {
-        nb[i].push_back(q);
-        nb[static_cast<std::size_t>(q)].push_back(static_cast<int>(i));
-      }
-      return true;
-    });
-    grid.insert(x, static_cast<int>(i));
-  }
-  std::vector<int> count(n);
-  std::vector<char> gone(n, 0);
-  for (std::size_t i = 0; i < n; ++i) count[i] = static_cast<int>(nb[i].size()) + walls[i];
-  std::vector<int> stack;
-  for (std::size_t i = 0; i < n; ++i)
-    if (count[i] < 2) stack.push_back(static_cast<int>(i)), gone[i] = 1;
-  while (!stack.empty()) {
-    const int i = stack.back();
-    stack.pop_back();
-    for (int q : nb[static_cast<std::size_t>(i)])
-      if (!gone[static_cast<std::size_t>(q)] && --count[static_cast<std::size_t>(q)] < 2) {
-        gone[static_cast<std::size_t>(q)] = 1;
-        stack.push_back(q);
-      }
-  }
-  double sum = 0, kept = 0;
-  for (std::size_t i = 0; i < n; ++i)
-    if (!gone[i]) sum += count[i], kept += 1;
-  return {kept > 0 ? sum / kept : 0.0, n > 0 ? 1.0 - kept / static_cast<double>(n) : 0.0};
 }
 
 void set_scale(Particles& q, const std::vector<double>& target, double scale, double rho,
@@ -291,51 +142,6 @@ void jam_stage(const PackingParams& in, Particles p, const std::vector<double>& 
   res.mean_stress = wall_mean_stress(*sys, R, L);
   res.particles = sys->particles();
   res.settled = overlap < in.overlap_tolerance;
-}
-
-// Census of the final state: coordination (with and without walls and rattlers), largest
-// overlap, and the contact-virial mean stress the grains would carry with Hertz contacts
-// (rigid Hertz walls), the law of the SHPB runs (Sec. 4.3); then the grains are put at rest
-// and the porosity is taken from the final radii.
-void take_census(PackingResult& res, const PackingParams& in) {
-  const double L = in.length;
-  const double volume = psd::cylinder_volume(in.diameter, L);
-  double mean_r = 0;
-  for (double r : res.particles.radius) mean_r += r;
-  mean_r /= static_cast<double>(res.particles.size());
-  {
-    const Particles& q = res.particles;
-    const double E = in.material.youngs_modulus, nu = in.material.poisson_ratio;
-    const double e_pair = E / (2 * (1 - nu * nu)), e_wall = E / (1 - nu * nu);
-    const Census c = contact_census(
-        q, in.diameter, L,
-        [&](double delta, double ri, double rj) {
-          return 4.0 / 3.0 * e_pair * std::sqrt(ri * rj / (ri + rj)) * delta * std::sqrt(delta);
-        },
-        [&](double delta, double r) {
-          return 4.0 / 3.0 * e_wall * std::sqrt(r) * delta * std::sqrt(delta);
-        });
-    const double nn = static_cast<double>(q.size());
-    res.coordination = 2.0 * static_cast<double>(c.pairs) / nn;
-    res.coordination_with_walls = (2.0 * static_cast<double>(c.pairs) + static_cast<double>(c.walls)) / nn;
-    res.mean_stress_hertz = c.virial / (3 * volume);
-    const auto [z, frac] = without_rattlers(q, in.diameter, L);
-    res.coordination_no_rattlers = z;
-    res.rattler_fraction = frac;
-    res.max_overlap = max_packing_overlap(q, in.diameter, L) / mean_r;
-  }
-  Particles& out = res.particles;
-  double solid = 0;
-  for (std::size_t i = 0; i < out.size(); ++i) {
-    out.v[i] = {};
-    out.omega[i] = {};
-    out.f[i] = {};
-    out.torque[i] = {};
-    out.material[i] = in.material_index;
-    solid += 4.0 / 3.0 * kPi * std::pow(out.radius[i], 3);
-  }
-  res.count = out.size();
-  res.porosity = 1 - solid / volume;
 }
 
 }  // namespace
