@@ -12,6 +12,15 @@
 
 namespace kolsky::dem {
 
+DemSystem::PairArrays DemSystem::pair_arrays() {
+  const int n = static_cast<int>(p_.size()), block = opt_.owner_block;
+  return {pairs_.first.data(), pairs_.i.data(), pairs_.j.data(), pair_slot_.data(),
+          p_.material.data(), p_.x.data(), p_.v.data(), p_.omega.data(), p_.radius.data(),
+          p_.mass.data(), pairs_.history.data(), p_.f.data(), p_.torque.data(),
+          dissipated_.data(), pair_out_.elastic.data(), pair_out_.out.data(),
+          pair_out_.active.data(), n, block, n / block + (n % block != 0)};
+}
+
 template <class Law>
 void DemSystem::pair_forces(const Law& law, double dt) {
   // One pass per owner particle i over its pairs k (j > i), in fixed blocks of opt_.owner_block
@@ -19,79 +28,53 @@ void DemSystem::pair_forces(const Law& law, double dt) {
   // j lies in i's block (as the partner's owners all do, in pair order, before j's own sum),
   // else stored in j's slot for gather(). So each grain's sums have one order for any number
   // of threads, and the batched kernel (dem_forces_batched.cpp) keeps the same order.
-  const int n = static_cast<int>(p_.size());
-  const int* first = pairs_.first.data();
-  const int* pj = pairs_.j.data();
-  Vec3* hist = pairs_.history.data();
-  const Vec3* x = p_.x.data();
-  const Vec3* v = p_.v.data();
-  const Vec3* w = p_.omega.data();
-  const double* rad = p_.radius.data();
-  const double* mass = p_.mass.data();
-  const int* mat = p_.material.data();
-  Vec3* f = p_.f.data();
-  Vec3* tq = p_.torque.data();
-  double* diss = dissipated_.data();
-  const int* slot = pair_slot_.data();
-  ContactOut* out = pair_out_.out.data();
-  unsigned char* active = pair_out_.active.data();
-  double* stored = pair_out_.elastic.data();
-  const int block = opt_.owner_block, n_blocks = n / block + (n % block != 0);
+  const PairArrays a = pair_arrays();
+  const int n = a.n, block = a.block, n_blocks = a.n_blocks;
 #pragma omp parallel for schedule(static) if (n >= kParallelMin)
   for (int blk = 0; blk < n_blocks; ++blk) {
     const int i0 = blk * block, i1 = i0 + std::min(n - i0, block);
-    for (int q = i0; q < i1; ++q) f[q] = tq[q] = Vec3{};
+    for (int q = i0; q < i1; ++q) a.f[q] = a.tq[q] = Vec3{};
     for (int i = i0; i < i1; ++i) {
-      const Vec3 xi = x[i], vi = v[i], wi = w[i];
-      const double ri = rad[i], mi = mass[i];
-      const int mat_i = mat[i];
+      const Vec3 xi = a.x[i], vi = a.v[i], wi = a.w[i];
+      const double ri = a.rad[i], mi = a.mass[i];
+      const int mat_i = a.mat[i];
       Vec3 F{}, T{};
       double D = 0;
-      for (int k = first[i]; k < first[i + 1]; ++k) {
-        const int j = pj[k], sk = slot[k];
-        const Vec3 d = x[j] - xi;
-        const double rsum = ri + rad[j];
+      for (int k = a.first[i]; k < a.first[i + 1]; ++k) {
+        const int j = a.pj[k];
+        const Vec3 d = a.x[j] - xi;
+        const double rsum = ri + a.rad[j];
         const double d2 = norm2(d);
         if (d2 >= rsum * rsum) {
-          if (active[k]) {  // separated: its slot and stored energy read zero
-            if (sk >= 0) out[sk] = ContactOut{};
-            stored[k] = 0;
-          }
-          active[k] = 0;
+          if (a.active[k]) a.separated(k);
+          a.active[k] = 0;
           // A separated contact forgets its tangential spring (read first: most are zero).
-          if (hist[k].x != 0 || hist[k].y != 0 || hist[k].z != 0) hist[k] = Vec3{};
+          if (a.hist[k].x != 0 || a.hist[k].y != 0 || a.hist[k].z != 0) a.hist[k] = Vec3{};
           continue;
         }
         const double dist = std::sqrt(d2);
         ContactGeometry g;
         g.normal = dist > 0 ? (1.0 / dist) * d : Vec3{0, 0, 1};
         g.overlap = rsum - dist;
-        const double ai = ri - 0.5 * g.overlap, aj = rad[j] - 0.5 * g.overlap;
-        g.v_contact = v[j] - vi - cross(ai * wi + aj * w[j], g.normal);
-        g.omega_rel = wi - w[j];
+        const double ai = ri - 0.5 * g.overlap, aj = a.rad[j] - 0.5 * g.overlap;
+        g.v_contact = a.v[j] - vi - cross(ai * wi + aj * a.w[j], g.normal);
+        g.omega_rel = wi - a.w[j];
         g.r_i = ri;
-        g.r_j = rad[j];
-        g.r_eff = ri * rad[j] / rsum;
-        g.m_eff = mi * mass[j] / (mi + mass[j]);
-        const ContactResult r = law.pair(mat_i, mat[j]).force(g, hist[k], dt);
+        g.r_j = a.rad[j];
+        g.r_eff = ri * a.rad[j] / rsum;
+        g.m_eff = mi * a.mass[j] / (mi + a.mass[j]);
+        const ContactResult r = law.pair(mat_i, a.mat[j]).force(g, a.hist[k], dt);
         const Vec3 nf = cross(g.normal, r.force);
         F += r.force;
         T += ai * nf + r.rolling_torque;
         D += 0.5 * r.dissipated;
-        const Vec3 torque_j = aj * nf - r.rolling_torque;
-        if (sk < 0) {  // partner in this block: added now, in pair order
-          f[j] += -r.force;
-          tq[j] += torque_j;
-          diss[j] += 0.5 * r.dissipated;
-        } else {
-          out[sk] = {-r.force, torque_j, 0.5 * r.dissipated, 0.0};
-        }
-        stored[k] = r.elastic_energy;
-        active[k] = 1;
+        a.partner_side(k, j, r.force, aj * nf - r.rolling_torque, 0.5 * r.dissipated,
+                       r.elastic_energy);
+        a.active[k] = 1;
       }
-      f[i] += F;  // after the sides it received as a partner within its block
-      tq[i] += T;
-      diss[i] += D;
+      a.f[i] += F;  // after the sides it received as a partner within its block
+      a.tq[i] += T;
+      a.diss[i] += D;
     }
   }
 }

@@ -147,6 +147,42 @@ class DemSystem {
     void resize(std::size_t n);  // all inactive, all zero
   };
 
+  // Raw views of what the two pair kernels (dem_forces.cpp, dem_forces_batched.cpp) read and
+  // write, with the two steps they must do alike so that both keep one summation order.
+  struct PairArrays {
+    const int *first, *pi, *pj, *slot, *mat;
+    const Vec3 *x, *v, *w;
+    const double *rad, *mass;
+    Vec3 *hist, *f, *tq;
+    double *diss, *stored;
+    ContactOut* out;
+    unsigned char* active;
+    int n, block, n_blocks;  // grains, owner-block size, blocks
+
+    /// Partner j's side of touching pair k (force on i, torque on j, half the dissipation):
+    /// added to j now when j is in the owner's block (slot -1: the partner's owners all come
+    /// in pair order before j's own sum), else stored in j's slot for gather(); and the
+    /// pair's stored energy.
+    void partner_side(int k, int j, const Vec3& force_i, const Vec3& torque_j,
+                      double half_dissipated, double elastic) const {
+      const int sk = slot[k];
+      if (sk < 0) {
+        f[j] += -force_i;
+        tq[j] += torque_j;
+        diss[j] += half_dissipated;
+      } else {
+        out[sk] = {-force_i, torque_j, half_dissipated, 0.0};
+      }
+      stored[k] = elastic;
+    }
+    /// Pair k stopped touching: its slot and stored energy read zero again.
+    void separated(int k) const {
+      if (slot[k] >= 0) out[slot[k]] = ContactOut{};
+      stored[k] = 0;
+    }
+  };
+  PairArrays pair_arrays();
+
   void compute_forces(double dt);
   template <class Law> void pair_forces(const Law& law, double dt);
   void hertz_mindlin_pair_forces(const HertzMindlin& law, double dt);  // dem_forces_batched.cpp
