@@ -1,7 +1,8 @@
 // Speed against error of the upscaling factor N (Ch. 5 studies the same effect): the Ch. 4
-// case with the calibrated rotational resistance repeated at coarser N, each against the
-// finest N run (the set's own N), as the deviation of the sigma_t-strain curve up to the
-// reference's 10 MPa point and the wall time of the case and of its packing.
+// case with the calibrated rotational resistance repeated at other N, each against the set's
+// own N (the reference), as the deviation of the sigma_t-strain curve up to the reference's
+// 10 MPa point and the wall time of the case and of its packing. A finer N than the reference
+// tells whether the reference is converged; coarser ones what their savings cost.
 #pragma once
 #include <string>
 #include <vector>
