@@ -12,8 +12,8 @@
 //     song_specimen); counters grains, particle_steps_per_s and s_per_sim_us (wall seconds
 //     per simulated microsecond, which falls like N^-4: N^-3 grains, N^1 step). The first run
 //     packs them once: the packing's step count does not depend on N, so its cost scales with
-//     the grain count (about 11 min for N = 2, 25 min for N = 1.5 and 1.5 h for N = 1 on one
-//     core of the development machine; OpenMP threads shorten it).
+//     the grain count (measured on one core of the development machine: 6 min for N = 1.5,
+//     21 min for N = 1, with the other core busy; OpenMP threads shorten it).
 #include <benchmark/benchmark.h>
 #include <omp.h>
 
