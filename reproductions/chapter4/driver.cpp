@@ -60,6 +60,14 @@ int main(int argc, char** argv) {
   const std::string cache = std::filesystem::absolute(rep.out_dir + "/packing_cache").string();
   scene_json["specimen"]["packing_cache"] = cache;
   const double upscale = scene_json["specimen"]["upscale"].get<double>();
+  // KOLSKY_CH4_POROSITY: a diagnostic override of the specimen porosity (README, "A specimen
+  // that starts jammed"); the report then says so, and the porosity target fails.
+  std::string override_note;
+  if (const char* env = std::getenv("KOLSKY_CH4_POROSITY")) {
+    scene_json["specimen"]["porosity"] = std::stod(env);
+    override_note = "**Diagnostic run: specimen porosity overridden to " + std::string(env) +
+                    " by KOLSKY_CH4_POROSITY (the text's is 0.44).**\n\n";
+  }
 
   // Packing (timed here, through the cache the cases then hit).
   const auto sc = scene::parse_scene(scene_json, scene_path, args.set_dir());
@@ -277,7 +285,7 @@ int main(int argc, char** argv) {
     rep.plots.push_back(sp);
   }
 
-  rep.preamble_markdown =
+  rep.preamble_markdown = override_note +
       "Scene: `reproductions/chapter4/scene_" + args.scale + ".json` (DEM specimen, N = " + fmt("%g", upscale) +
       ", sphere-chain bars 216/108 balls as Table 4.1 prints, reconstructed 480/s pulse and grain-size curve). "
       "Interface stresses are the wall forces / specimen area (probes `stress_front`, `stress_back`); sigma_t, "
