@@ -111,6 +111,10 @@ Specimen song_specimen(double n) {
   p.seed = 2009;
   p.material = tmp[0];
   p.jam = true;
+  p.on_progress = [](const dem::PackingProgress& q) {
+    if (q.done % 10 == 0 || q.done == q.most)
+      std::fprintf(stderr, "bench_dem: packing, %s %d (of at most %d)\n", q.phase, q.done, q.most);
+  };
   const dem::PackingResult r = dem::generate_packing(p);
   std::fprintf(stderr, "bench_dem: %zu grains, porosity %.4f, coordination %.2f (%.2f without rattlers)\n",
                r.count, r.porosity, r.coordination, r.coordination_no_rattlers);

@@ -5,8 +5,11 @@
 
 #include <cmath>
 #include <filesystem>
+#include <map>
 #include <numbers>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "core/errors.hpp"
 #include "dem/dem_specimen_params.hpp"
@@ -88,7 +91,27 @@ TEST(DemPrestress, DeterministicAndCachedBitwise) {
   const CachedPacking again = cached_packing(stressed_params(), dir.string());
   EXPECT_FALSE(first.from_cache);
   EXPECT_TRUE(again.from_cache);
-  const PackingResult direct = generate_packing(stressed_params());
+  // Generated directly, with a progress hook: it reports every phase in order, and it only
+  // observes (the result below equals the cached ones bitwise; the cache key ignores it).
+  PackingParams observed = stressed_params();
+  std::vector<std::pair<std::string, int>> reports;
+  observed.on_progress = [&](const PackingProgress& p) {
+    EXPECT_LE(p.done, p.most);
+    reports.emplace_back(p.phase, p.done);
+  };
+  EXPECT_EQ(packing_cache_key(observed), packing_cache_key(stressed_params()));
+  const PackingResult direct = generate_packing(observed);
+  ASSERT_FALSE(reports.empty());
+  std::map<std::string, int> last;
+  std::string order;
+  for (const auto& [phase, done] : reports) {
+    EXPECT_EQ(done, last[phase] + 1) << phase;  // 1, 2, 3, ... within a phase
+    last[phase] = done;
+    if (order.empty() || order.substr(order.rfind(' ') + 1) != phase) order += " " + phase;
+  }
+  EXPECT_EQ(order, " growth settle prestress");
+  EXPECT_EQ(last["growth"], observed.growth_stages);
+  EXPECT_EQ(last["prestress"], direct.prestress_stages);
   for (const PackingResult* r : {&first.result, &again.result}) {
     ASSERT_EQ(r->count, direct.count);
     EXPECT_EQ(r->prestress_scale, direct.prestress_scale);

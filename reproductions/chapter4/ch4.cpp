@@ -3,12 +3,25 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <stdexcept>
 
 #include "scene/scene.hpp"
 
 namespace kolsky::ch4 {
+
+void print_packing_progress(dem::PackingParams& p, const std::string& label) {
+  p.on_progress = [label](const dem::PackingProgress& q) {
+    const int every = std::string(q.phase) == "prestress" ? 20 : 10;
+    if (q.done % every != 0 && q.done != q.most) return;
+    std::printf("%s: %s %d (of at most %d), %s %.3g\n", label.c_str(), q.phase, q.done, q.most,
+                std::string(q.phase) == "growth"   ? "radius scale"
+                : std::string(q.phase) == "settle" ? "largest overlap / mean radius"
+                                                   : "wall mean stress (Pa)",
+                q.value);
+  };
+}
 
 nlohmann::json read_json(const std::string& path) {
   std::ifstream f(path);

@@ -73,7 +73,9 @@ int main(int argc, char** argv) {
   const auto sc = scene::parse_scene(scene_json, scene_path, args.set_dir());
   const auto& dp = std::get<dem::DemSpecimenParams>(sc.spec.specimen);
   const auto t_pack0 = std::chrono::steady_clock::now();
-  const dem::CachedPacking pk = dem::cached_packing(dp.packing, dp.packing_cache);
+  dem::PackingParams pp = dp.packing;
+  ch4::print_packing_progress(pp, "packing N = " + fmt("%g", upscale));
+  const dem::CachedPacking pk = dem::cached_packing(pp, dp.packing_cache);
   const double pack_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t_pack0).count();
   const auto& P = pk.result;
   std::printf("packing: %zu grains (expected %.0f), porosity %.4f, Z (no rattlers) %.2f, %s in %.1f s\n",

@@ -23,7 +23,9 @@ std::vector<SeedCase> seed_study(const nlohmann::json& j, const std::string& sce
     try {  // pack once (the cases then read the cache)
       const auto sc = scene::parse_scene(js, scene_path, dir);
       const auto& dp = std::get<dem::DemSpecimenParams>(sc.spec.specimen);
-      porosity = dem::cached_packing(dp.packing, dp.packing_cache).result.porosity;
+      dem::PackingParams pp = dp.packing;
+      print_packing_progress(pp, "packing N = " + fmt("%g", n) + ", seed " + fmt("%g", seed));
+      porosity = dem::cached_packing(pp, dp.packing_cache).result.porosity;
     } catch (const std::exception& e) {
       failure = e.what();
     }

@@ -45,7 +45,9 @@ std::vector<UpscalingRow> upscaling_study(const nlohmann::json& j, const std::st
       const auto sc = scene::parse_scene(jn, scene_path, dir);
       const auto& dp = std::get<dem::DemSpecimenParams>(sc.spec.specimen);
       const auto t0 = std::chrono::steady_clock::now();
-      const dem::CachedPacking pk = dem::cached_packing(dp.packing, dp.packing_cache);
+      dem::PackingParams pp = dp.packing;
+      print_packing_progress(pp, "packing N = " + repro::fmt("%g", n));
+      const dem::CachedPacking pk = dem::cached_packing(pp, dp.packing_cache);
       row.pack_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
       row.packed_now = !pk.from_cache;
     } catch (const std::exception& e) {

@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <memory>
 #include <optional>
+#include <string>
 
 #include "app/commands.hpp"
 #include "app/summary.hpp"
@@ -92,13 +93,28 @@ int cmd_run(const std::vector<std::string>& args) {
   if (o.positional.size() != 1) throw UsageError("needs exactly one SCENE.json");
   const std::string& file = o.positional[0];
   if (o.threads > 0) omp_set_num_threads(o.threads);
-  const scene::Scene sc = scene::load_scene(file);
+  scene::Scene sc = scene::load_scene(file);
+  // A DEM specimen is packed (or read from its cache) while the simulation is built: minutes
+  // at N = 2, tens of minutes at N = 1. A bar per phase on a terminal.
+  std::optional<Progress> packing_bar;
+  std::string packing_phase;
+  auto* dem_params = std::get_if<dem::DemSpecimenParams>(&sc.spec.specimen);
+  if (dem_params && !o.quiet && stderr_is_terminal())
+    dem_params->packing.on_progress = [&](const dem::PackingProgress& p) {
+      if (packing_phase != p.phase) {
+        if (packing_bar) packing_bar->finish();
+        packing_phase = p.phase;
+        packing_bar.emplace(p.most, true, "kolsky packing, " + packing_phase + " ");
+      }
+      packing_bar->update(p.done);
+    };
   const std::string out = o.output.empty()
       ? std::filesystem::path(file).stem().string() + ".h5" : o.output;
 
   std::unique_ptr<shpb::SimulatedShpb> sim;
   try {
     sim = std::make_unique<shpb::SimulatedShpb>(sc.spec);
+    if (packing_bar) packing_bar->finish();
     sim->require_analysable_end();
   } catch (const InputError& e) {  // the physics knows the path, the scene knows the file
     throw InputError(file, e.path(), e.rule());

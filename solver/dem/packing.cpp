@@ -67,12 +67,16 @@ void loose_stage(const PackingParams& in, Particles p, const std::vector<double>
     res.steps += in.steps_per_stage;
     ++res.stages;
   };
-  for (int g = 1; g <= in.growth_stages; ++g)
-    stage(s0 + (1 - s0) * static_cast<double>(g) / in.growth_stages);
+  for (int g = 1; g <= in.growth_stages; ++g) {
+    const double scale = s0 + (1 - s0) * static_cast<double>(g) / in.growth_stages;
+    stage(scale);
+    progress(in, {"growth", g, in.growth_stages, scale});
+  }
   double overlap = max_packing_overlap(sys.particles(), in.diameter, L) / mean_r;
   for (int k = 0; k < in.max_settle_stages && overlap >= in.overlap_tolerance; ++k) {
     stage(1.0);
     overlap = max_packing_overlap(sys.particles(), in.diameter, L) / mean_r;
+    progress(in, {"settle", k + 1, in.max_settle_stages, overlap});
   }
   res.settled = overlap < in.overlap_tolerance;
   res.kinetic_energy = sys.particles().kinetic_energy();
@@ -125,6 +129,7 @@ void jam_stage(const PackingParams& in, Particles p, const std::vector<double>& 
     const double scale = s0 + (1 - s0) * static_cast<double>(g) / in.growth_stages;
     stage(scale, in.jam_velocity_quench);
     report("growth", scale, wall_mean_stress(*sys, R, L), 0);
+    progress(in, {"growth", g, in.growth_stages, scale});
   }
   // Settling at full size with quenched dynamics (v = omega = 0 at every stage, friction and
   // contact histories kept): the over-compressed frictional network relaxes by sliding and
@@ -135,6 +140,7 @@ void jam_stage(const PackingParams& in, Particles p, const std::vector<double>& 
     stage(1.0, 0.0);
     overlap = max_packing_overlap(sys->particles(), in.diameter, L) / mean_r;
     report("settle", 1.0, wall_mean_stress(*sys, R, L), overlap);
+    progress(in, {"settle", k + 1, in.max_settle_stages, overlap});
   }
   res.packing_friction = in.jam_friction;
   res.kinetic_energy = sys->particles().kinetic_energy();

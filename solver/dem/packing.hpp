@@ -21,11 +21,21 @@
 #pragma once
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 
 #include "dem/particles.hpp"
 #include "psd/grain_size_curve.hpp"
 
 namespace kolsky::dem {
+
+/// A packing's progress, reported through PackingParams::on_progress.
+struct PackingProgress {
+  const char* phase = "";  ///< "growth", "settle" or "prestress"
+  int done = 0;            ///< stages (pre-stress: servo intervals) done in this phase
+  int most = 0;            ///< the most this phase can take (it may end earlier)
+  double value = 0;        ///< settle: largest overlap / mean radius; prestress: wall mean
+                           ///< stress, Pa; growth: the radius scale s
+};
 
 struct PackingParams {
   psd::GrainSizeCurve curve;       ///< grain sizes of the specimen (already upscaled), m
@@ -67,6 +77,10 @@ struct PackingParams {
   /// or rigid frictionless Hertz walls when k_n = 0.
   double prestress_wall_normal_stiffness = 0;
   double prestress_wall_shear_stiffness = 0;
+  /// Called after every growth and settling stage and every pre-stress servo interval (a
+  /// progress report: packings take minutes to tens of minutes). It only observes: it is not
+  /// part of the result or of the cache key. Empty: silent.
+  std::function<void(const PackingProgress&)> on_progress;
 };
 
 struct PackingResult {

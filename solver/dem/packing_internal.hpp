@@ -1,5 +1,6 @@
 // Internals shared by the packing files (packing.cpp: generation; packing_census.cpp: the
-// census of a finished packing): a uniform cell grid over the packing cylinder.
+// census of a finished packing; prestress.cpp): a uniform cell grid over the packing cylinder,
+// and the progress hook.
 #pragma once
 #include <algorithm>
 #include <vector>
@@ -7,6 +8,11 @@
 #include "dem/packing.hpp"
 
 namespace kolsky::dem {
+
+// Reports p through in.on_progress, when one is set.
+inline void progress(const PackingParams& in, const PackingProgress& p) {
+  if (in.on_progress) in.on_progress(p);
+}
 
 // Uniform cell grid over the cylinder's bounding box [-R, R]^2 x [0, L].
 struct CellGrid {

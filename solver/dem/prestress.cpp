@@ -13,6 +13,7 @@
 #include "dem/contact_hertz_mindlin.hpp"
 #include "dem/contact_linear.hpp"
 #include "dem/dem_system.hpp"
+#include "dem/packing_internal.hpp"
 #include "dem/packing_walls.hpp"
 
 namespace kolsky::dem {
@@ -122,6 +123,8 @@ PrestressOutcome prestress_packing(Particles& p, const PackingParams& in) {
       std::fprintf(stderr, "prestress step %d s %.7f p %.4e Pa (target %.4e) Z %.2f\n", out.steps,
                    s, p_now, target,
                    2.0 * static_cast<double>(sys.n_contacts()) / static_cast<double>(r0.size()));
+    progress(in, {"prestress", static_cast<int>(history.size()), in.prestress_max_steps / interval,
+                  p_now});
     if (out.converged) break;
     s = std::clamp(s + gain * (1 - p_now / target), 0.99, 1.01);
     scale_grains(sys.mutable_particles(), r0, s, in.material.density);
