@@ -1,5 +1,6 @@
 // kolsky: command-line front of the SHPB suite. Subcommands: run, analyze, defaults.
 // Exit codes: 0 ok, 1 usage/internal error, 2 bad input (InputError), 3 numerical failure.
+#include <algorithm>
 #include <cstdio>
 #include <cstring>
 #include <exception>
@@ -51,6 +52,14 @@ int main(int argc, char** argv) {
   }
   const std::string cmd = args[0];
   args.erase(args.begin());
+  // `kolsky run --help` and the like: the one usage text (eos has its own longer --help).
+  const bool wants_help = std::find_if(args.begin(), args.end(), [](const std::string& a) {
+                            return a == "--help" || a == "-h";
+                          }) != args.end();
+  if (wants_help && (cmd == "run" || cmd == "analyze" || cmd == "defaults")) {
+    std::fputs(kUsage, stdout);
+    return 0;
+  }
   try {
     if (cmd == "run") return kolsky::app::cmd_run(args);
     if (cmd == "analyze") return kolsky::app::cmd_analyze(args);

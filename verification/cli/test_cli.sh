@@ -31,6 +31,8 @@ JSON
 case "$case_name" in
 help)
   expect_exit 0 "$kolsky" --help; grep -q "kolsky run SCENE.json" out.txt || fail "usage text"
+  expect_exit 0 "$kolsky" run --help; grep -q "kolsky run SCENE.json" out.txt || fail "run --help"
+  expect_exit 0 "$kolsky" analyze -h; grep -q "kolsky analyze" out.txt || fail "analyze -h"
   expect_exit 1 "$kolsky"; expect_exit 1 "$kolsky" frobnicate
   expect_exit 0 "$kolsky" defaults
   for k in bars.incident.length pulse.kind specimen.constrained_modulus time.dt processing.threshold_fraction; do
