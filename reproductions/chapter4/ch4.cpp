@@ -11,16 +11,21 @@
 
 namespace kolsky::ch4 {
 
-void print_packing_progress(dem::PackingParams& p, const std::string& label) {
+dem::CachedPacking pack_scene(const nlohmann::json& j, const std::string& scene_path,
+                              const std::string& dir, const std::string& label) {
+  const auto sc = scene::parse_scene(j, scene_path, dir);
+  const auto& dp = std::get<dem::DemSpecimenParams>(sc.spec.specimen);
+  dem::PackingParams p = dp.packing;
   p.on_progress = [label](const dem::PackingProgress& q) {
-    const int every = std::string(q.phase) == "prestress" ? 20 : 10;
-    if (q.done % every != 0 && q.done != q.most) return;
+    const std::string phase = q.phase;
+    if (q.done % (phase == "prestress" ? 20 : 10) != 0 && q.done != q.most) return;
     std::printf("%s: %s %d (of at most %d), %s %.3g\n", label.c_str(), q.phase, q.done, q.most,
-                std::string(q.phase) == "growth"   ? "radius scale"
-                : std::string(q.phase) == "settle" ? "largest overlap / mean radius"
-                                                   : "wall mean stress (Pa)",
+                phase == "growth"   ? "radius scale"
+                : phase == "settle" ? "largest overlap / mean radius"
+                                    : "wall mean stress (Pa)",
                 q.value);
   };
+  return dem::cached_packing(p, dp.packing_cache);
 }
 
 nlohmann::json read_json(const std::string& path) {

@@ -46,9 +46,11 @@ struct Measures {
 };
 Measures measure(const CaseResult& c, double lo_stress, double mid_stress, double limit);
 
-/// Makes the packing of p print a progress line to stdout (every 10 stages, every 20 servo
-/// intervals and at the end of each phase), headed by `label`.
-void print_packing_progress(dem::PackingParams& p, const std::string& label);
+/// The packing of scene `j` (relative paths against `dir`) through its cache, printing a
+/// progress line headed by `label` to stdout every 10 stages and every 20 pre-stress servo
+/// intervals while it packs.
+dem::CachedPacking pack_scene(const nlohmann::json& j, const std::string& scene_path,
+                              const std::string& dir, const std::string& label);
 
 nlohmann::json read_json(const std::string& path);
 /// "0,0.999,1" -> {0, 0.999, 1}; "" -> {} (environment overrides of the driver's lists).

@@ -18,7 +18,6 @@
 #include "chapter4/upscaling.hpp"
 #include "common/driver_args.hpp"
 #include "harness/report.hpp"
-#include "scene/scene.hpp"
 #include "common/format.hpp"
 
 using namespace kolsky;
@@ -70,12 +69,9 @@ int main(int argc, char** argv) {
   }
 
   // Packing (timed here, through the cache the cases then hit).
-  const auto sc = scene::parse_scene(scene_json, scene_path, args.set_dir());
-  const auto& dp = std::get<dem::DemSpecimenParams>(sc.spec.specimen);
   const auto t_pack0 = std::chrono::steady_clock::now();
-  dem::PackingParams pp = dp.packing;
-  ch4::print_packing_progress(pp, "packing N = " + fmt("%g", upscale));
-  const dem::CachedPacking pk = dem::cached_packing(pp, dp.packing_cache);
+  const dem::CachedPacking pk =
+      ch4::pack_scene(scene_json, scene_path, args.set_dir(), "packing N = " + fmt("%g", upscale));
   const double pack_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t_pack0).count();
   const auto& P = pk.result;
   std::printf("packing: %zu grains (expected %.0f), porosity %.4f, Z (no rattlers) %.2f, %s in %.1f s\n",

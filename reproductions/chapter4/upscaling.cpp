@@ -6,7 +6,6 @@
 #include <cstdio>
 
 #include "common/format.hpp"
-#include "scene/scene.hpp"
 
 namespace kolsky::ch4 {
 
@@ -42,12 +41,8 @@ std::vector<UpscalingRow> upscaling_study(const nlohmann::json& j, const std::st
     nlohmann::json jn = j;
     jn["specimen"]["upscale"] = n;
     try {
-      const auto sc = scene::parse_scene(jn, scene_path, dir);
-      const auto& dp = std::get<dem::DemSpecimenParams>(sc.spec.specimen);
       const auto t0 = std::chrono::steady_clock::now();
-      dem::PackingParams pp = dp.packing;
-      print_packing_progress(pp, "packing N = " + repro::fmt("%g", n));
-      const dem::CachedPacking pk = dem::cached_packing(pp, dp.packing_cache);
+      const dem::CachedPacking pk = pack_scene(jn, scene_path, dir, "packing N = " + repro::fmt("%g", n));
       row.pack_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
       row.packed_now = !pk.from_cache;
     } catch (const std::exception& e) {
