@@ -7,6 +7,7 @@
 #include <fstream>
 #include <stdexcept>
 
+#include "dem/wall_layer.hpp"
 #include "scene/scene.hpp"
 
 namespace kolsky::ch4 {
@@ -26,6 +27,20 @@ dem::CachedPacking pack_scene(const nlohmann::json& j, const std::string& scene_
                 q.value);
   };
   return dem::cached_packing(p, dp.packing_cache);
+}
+
+WallLayer wall_layer(const nlohmann::json& j, const dem::Particles& p) {
+  WallLayer w;
+  if (p.size() == 0) return w;
+  const double r_min = *std::min_element(p.radius.begin(), p.radius.end());
+  const double r_max = *std::max_element(p.radius.begin(), p.radius.end());
+  const auto prof = dem::wall_layer_profile(p, j.at("specimen").at("diameter").get<double>(),
+                                            j.at("specimen").at("length").get<double>(), r_min / 3,
+                                            r_max / 5);
+  w.whole = prof.fraction_beyond(0);
+  w.core = prof.fraction_beyond(2 * r_max);
+  w.core_share = prof.volume_share_beyond(2 * r_max);
+  return w;
 }
 
 nlohmann::json read_json(const std::string& path) {

@@ -237,7 +237,7 @@ int main(int argc, char** argv) {
     const auto rows = ch4::upscaling_study(scene_json, scene_path, args.set_dir(), k_cal, base, b, ns, 1e6, limit);
     study = "\n\n**Speed against error of the upscaling factor N** (calibrated k; deviation of sigma_t(strain) "
             "from the N = " + fmt("%g", upscale) + " curve between back stresses of 1 and 10 MPa on it; wall times "
-            "on one core of this machine):\n\n" + ch4::upscaling_table(base, b, upscale, rows);
+            "on one core of this machine):\n\n" + ch4::upscaling_table(base, b, ch4::wall_layer(scene_json, P.particles), upscale, rows);
     harness::Plot uc{"upscaling_curves.png", "sigma_t vs strain for upscaling factors N", "strain (-)", "stress (MPa)", {}, {}, {}};
     harness::Plot ue{"upscaling_cost.png", "Cost vs deviation from the finest N", "case wall time (s)", "RMS deviation of sigma_t (MPa)", {}, {}, {}};
     uc.series.push_back({"N = " + fmt("%g", upscale), ch4::scaled(h.strain, 1, n), ch4::scaled(h.stress_back, 1e-6, n)});

@@ -45,6 +45,7 @@ std::vector<UpscalingRow> upscaling_study(const nlohmann::json& j, const std::st
       const dem::CachedPacking pk = pack_scene(jn, scene_path, dir, "packing N = " + repro::fmt("%g", n));
       row.pack_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
       row.packed_now = !pk.from_cache;
+      row.layer = wall_layer(jn, pk.result.particles);
     } catch (const std::exception& e) {
       row.failure = e.what();
       rows.push_back(row);
@@ -59,6 +60,7 @@ std::vector<UpscalingRow> upscaling_study(const nlohmann::json& j, const std::st
     if (c.ok && ref_m.i_lo >= 0 && ref_m.i_end > ref_m.i_lo) {
       const Measures m = measure(c, lo, 3e6, limit);
       row.modulus = m.modulus_back;
+      if (m.i_lo >= 0) row.toe_strain = c.h.strain[m.i_lo];
       const long end = m.i_end > 0 ? m.i_end : static_cast<long>(c.h.t.size());
       row.strain.assign(c.h.strain.begin(), c.h.strain.begin() + end);
       row.stress.assign(c.h.stress_back.begin(), c.h.stress_back.begin() + end);
@@ -74,32 +76,43 @@ std::vector<UpscalingRow> upscaling_study(const nlohmann::json& j, const std::st
       }
       row.rms = cnt > 0 ? std::sqrt(sum / cnt) : NAN;
     }
-    std::printf("upscaling N = %g: %zu grains, %s, case %.1f s, packing %.1f s%s, RMS deviation %.2f MPa\n",
+    std::printf("upscaling N = %g: %zu grains, %s, case %.1f s, packing %.1f s%s, RMS deviation %.2f MPa, "
+                "solid fraction %.4f (core %.4f), strain at 1 MPa %.4f\n",
                 n, row.grains, row.ok ? "ok" : row.failure.c_str(), row.case_s, row.pack_s,
-                row.packed_now ? " (generated)" : " (cache)", row.rms / 1e6);
+                row.packed_now ? " (generated)" : " (cache)", row.rms / 1e6, row.layer.whole,
+                row.layer.core, row.toe_strain);
     rows.push_back(row);
   }
   return rows;
 }
 
-std::string upscaling_table(const CaseResult& reference, const Measures& ref_m, double reference_n,
+std::string upscaling_table(const CaseResult& reference, const Measures& ref_m,
+                            const WallLayer& ref_layer, double reference_n,
                             const std::vector<UpscalingRow>& rows) {
   using repro::fmt;
+  // The core's solid fraction when the back face first carries 1 MPa, if the core takes the
+  // specimen's mean axial strain (uniaxial strain: the axial strain is the volume change).
+  auto layer_cells = [](const WallLayer& w, double toe) {
+    return " | " + fmt("%.2f %%", 100 * toe) + " | " + fmt("%.4f", w.whole) + " / " + fmt("%.4f", w.core) + " (" +
+           fmt("%.0f %%", 100 * w.core_share) + ") | " + fmt("%.3f", w.core / (1 - toe)) + " |\n";
+  };
   std::string t =
-      "| N | grains | dt (ns) | case wall (s) | packing wall (s) | M 1-10 MPa | RMS dev. | max dev. |\n"
-      "|---|---|---|---|---|---|---|---|\n";
+      "| N | grains | dt (ns) | case wall (s) | packing wall (s) | M 1-10 MPa | RMS dev. | max dev. | "
+      "strain at 1 MPa | solid fraction whole / core (core's volume share) | core at 1 MPa |\n"
+      "|---|---|---|---|---|---|---|---|---|---|---|\n";
+  const double ref_toe = ref_m.i_lo >= 0 ? reference.h.strain[ref_m.i_lo] : NAN;
   t += "| " + fmt("%g", reference_n) + " (reference) | " + std::to_string(reference.grains) + " | " +
        fmt("%.2f", reference.dt * 1e9) + " | " + fmt("%.1f", reference.wall_s) + " | - | " +
-       fmt("%.1f MPa", ref_m.modulus_back / 1e6) + " | 0 | 0 |\n";
+       fmt("%.1f MPa", ref_m.modulus_back / 1e6) + " | 0 | 0" + layer_cells(ref_layer, ref_toe);
   for (const auto& r : rows) {
     if (!r.ok) {
-      t += "| " + fmt("%g", r.n) + " | failed: " + r.failure + " | | | | | | |\n";
+      t += "| " + fmt("%g", r.n) + " | failed: " + r.failure + " | | | | | | | | | |\n";
       continue;
     }
     t += "| " + fmt("%g", r.n) + " | " + std::to_string(r.grains) + " | " + fmt("%.2f", r.dt * 1e9) +
          " | " + fmt("%.1f", r.case_s) + " | " + fmt("%.1f", r.pack_s) + (r.packed_now ? "" : " (cache)") +
          " | " + fmt("%.1f MPa", r.modulus / 1e6) + " | " + fmt("%.2f MPa", r.rms / 1e6) + " | " +
-         fmt("%.2f MPa", r.max / 1e6) + " |\n";
+         fmt("%.2f MPa", r.max / 1e6) + layer_cells(r.layer, r.toe_strain);
   }
   return t;
 }

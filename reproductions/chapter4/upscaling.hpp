@@ -20,6 +20,8 @@ struct UpscalingRow {
   double dt = 0;             ///< DEM step, s
   double modulus = 0;        ///< Pa, sigma_t fit over back stress 1-10 MPa
   double rms = 0, max = 0;   ///< |sigma_t(N) - sigma_t(ref)| over the reference's strain range, Pa
+  double toe_strain = NAN;   ///< strain at the first back stress >= lo (the end of the toe)
+  WallLayer layer;           ///< solid fractions of the packing (whole, core)
   std::vector<double> strain, stress;  ///< sigma_t(strain) to the first 10 MPa sample, Pa
   bool ok = false;
   std::string failure;
@@ -33,8 +35,9 @@ std::vector<UpscalingRow> upscaling_study(const nlohmann::json& j, const std::st
                                           const CaseResult& reference, const Measures& ref_m,
                                           const std::vector<double>& ns, double lo, double limit);
 
-/// Markdown table of the study (the reference first).
+/// Markdown table of the study (the reference, whose packing has `ref_layer`, first).
 std::string upscaling_table(const CaseResult& reference, const Measures& ref_m,
-                            double reference_n, const std::vector<UpscalingRow>& rows);
+                            const WallLayer& ref_layer, double reference_n,
+                            const std::vector<UpscalingRow>& rows);
 
 }  // namespace kolsky::ch4
