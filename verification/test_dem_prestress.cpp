@@ -95,9 +95,15 @@ TEST(DemPrestress, DeterministicAndCachedBitwise) {
   // observes (the result below equals the cached ones bitwise; the cache key ignores it).
   PackingParams observed = stressed_params();
   std::vector<std::pair<std::string, int>> reports;
+  PackingProgress last_prestress;
   observed.on_progress = [&](const PackingProgress& p) {
     EXPECT_LE(p.done, p.most);
     reports.emplace_back(p.phase, p.done);
+    // The diagnostics: stress and coordination in every phase of a jammed packing, the energy
+    // ratio while growing and settling (NaN while pre-stressing).
+    EXPECT_TRUE(std::isfinite(p.wall_stress) && std::isfinite(p.coordination)) << p.phase;
+    EXPECT_EQ(std::isfinite(p.kinetic_to_elastic), std::string(p.phase) != "prestress") << p.phase;
+    if (std::string(p.phase) == "prestress") last_prestress = p;
   };
   EXPECT_EQ(packing_cache_key(observed), packing_cache_key(stressed_params()));
   const PackingResult direct = generate_packing(observed);
@@ -112,6 +118,12 @@ TEST(DemPrestress, DeterministicAndCachedBitwise) {
   EXPECT_EQ(order, " growth settle prestress");
   EXPECT_EQ(last["growth"], observed.growth_stages);
   EXPECT_EQ(last["prestress"], direct.prestress_stages);
+  // The last servo interval is within twice the tolerance of the target (the convergence
+  // rule), and the network it reports is jammed (Z > 2, as test_dem_packing asks).
+  EXPECT_EQ(last_prestress.wall_stress, last_prestress.value);
+  EXPECT_NEAR(last_prestress.wall_stress, observed.initial_stress,
+              2 * observed.prestress_tolerance * observed.initial_stress);
+  EXPECT_GT(last_prestress.coordination, 2.0);
   for (const PackingResult* r : {&first.result, &again.result}) {
     ASSERT_EQ(r->count, direct.count);
     EXPECT_EQ(r->prestress_scale, direct.prestress_scale);

@@ -20,11 +20,15 @@ dem::CachedPacking pack_scene(const nlohmann::json& j, const std::string& scene_
   p.on_progress = [label](const dem::PackingProgress& q) {
     const std::string phase = q.phase;
     if (q.done % (phase == "prestress" ? 20 : 10) != 0 && q.done != q.most) return;
-    std::printf("%s: %s %d (of at most %d), %s %.3g\n", label.c_str(), q.phase, q.done, q.most,
+    std::printf("%s: %s %d (of at most %d), %s %.3g", label.c_str(), q.phase, q.done, q.most,
                 phase == "growth"   ? "radius scale"
                 : phase == "settle" ? "largest overlap / mean radius"
                                     : "wall mean stress (Pa)",
                 q.value);
+    if (phase != "prestress" && std::isfinite(q.wall_stress))
+      std::printf(", wall mean stress %.3g Pa", q.wall_stress);
+    if (std::isfinite(q.coordination)) std::printf(", Z %.2f", q.coordination);
+    std::printf("\n");
   };
   return dem::cached_packing(p, dp.packing_cache);
 }

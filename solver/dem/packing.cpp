@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <cstdlib>
 #include <limits>
 #include <numbers>
@@ -116,20 +115,21 @@ void jam_stage(const PackingParams& in, Particles p, const std::vector<double>& 
     res.steps += sps;
     ++res.stages;
   };
-  const bool verbose = std::getenv("KOLSKY_PACKING_VERBOSE") != nullptr;
-  auto report = [&](const char* what, double scale, double p_now, double overlap) {
-    if (!verbose) return;
+  // The stage's diagnostics for the progress hook (computed only when one is set).
+  auto report = [&](const char* phase, int done, int most, double value) {
+    if (!in.on_progress) return;
+    PackingProgress q{phase, done, most, value};
     const DemEnergy e = sys->energy();
-    std::fprintf(stderr, "packing %s stage %d s %.5f p %.3e Pa Z %.2f ke/el %.2e overlap %.2e\n",
-                 what, res.stages, scale, p_now, 2.0 * static_cast<double>(sys->n_contacts()) / n,
-                 e.kinetic / std::max(e.elastic, 1e-300), overlap);
+    q.wall_stress = wall_mean_stress(*sys, R, L);
+    q.coordination = 2.0 * static_cast<double>(sys->n_contacts()) / n;
+    q.kinetic_to_elastic = e.kinetic / std::max(e.elastic, 1e-300);
+    progress(in, q);
   };
   // Growth with friction: the grains lock into a frictional network as they touch.
   for (int g = 1; g <= in.growth_stages; ++g) {
     const double scale = s0 + (1 - s0) * static_cast<double>(g) / in.growth_stages;
     stage(scale, in.jam_velocity_quench);
-    report("growth", scale, wall_mean_stress(*sys, R, L), 0);
-    progress(in, {"growth", g, in.growth_stages, scale});
+    report("growth", g, in.growth_stages, scale);
   }
   // Settling at full size with quenched dynamics (v = omega = 0 at every stage, friction and
   // contact histories kept): the over-compressed frictional network relaxes by sliding and
@@ -139,8 +139,7 @@ void jam_stage(const PackingParams& in, Particles p, const std::vector<double>& 
   for (int k = 0; k < in.max_settle_stages && overlap >= in.overlap_tolerance; ++k) {
     stage(1.0, 0.0);
     overlap = max_packing_overlap(sys->particles(), in.diameter, L) / mean_r;
-    report("settle", 1.0, wall_mean_stress(*sys, R, L), overlap);
-    progress(in, {"settle", k + 1, in.max_settle_stages, overlap});
+    report("settle", k + 1, in.max_settle_stages, overlap);
   }
   res.packing_friction = in.jam_friction;
   res.kinetic_energy = sys->particles().kinetic_energy();

@@ -19,6 +19,7 @@
 // pre-stressed to that mean stress (prestress.hpp): the radii grow by a factor s - 1 ~ 1e-4,
 // so the porosity drops by ~3 (s - 1)(1 - n) (reported). SI units.
 #pragma once
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <functional>
@@ -35,6 +36,11 @@ struct PackingProgress {
   int most = 0;            ///< the most this phase can take (it may end earlier)
   double value = 0;        ///< settle: largest overlap / mean radius; prestress: wall mean
                            ///< stress, Pa; growth: the radius scale s
+  // Diagnostics of the frictional (jammed) growth and settling and of the pre-stress; NaN
+  // where not reported (the loose packing's stages, and kinetic_to_elastic while pre-stressing).
+  double wall_stress = NAN;         ///< wall mean stress (s_zz + 2 s_rr) / 3, Pa
+  double coordination = NAN;        ///< 2 x touching grain pairs / grains (walls excluded)
+  double kinetic_to_elastic = NAN;  ///< kinetic over elastic energy of the assembly
 };
 
 struct PackingParams {

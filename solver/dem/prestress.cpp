@@ -3,7 +3,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <cstdlib>
 #include <limits>
 #include <numbers>
@@ -80,7 +79,6 @@ PrestressOutcome prestress_packing(Particles& p, const PackingParams& in) {
     add_packing_walls(sys, R, L,
                       HertzMindlinWall(materials, rigid, {0.0, in.prestress_restitution}));
   }
-  const bool verbose = std::getenv("KOLSKY_PACKING_VERBOSE") != nullptr;
 
   PrestressOutcome out;
   // Servo (as PFC's servo walls, on the radii): every `interval` steps the radius factor moves
@@ -119,12 +117,13 @@ PrestressOutcome prestress_packing(Particles& p, const PackingParams& in) {
                       worst <= 2 * in.prestress_tolerance;
       out.mean_stress = mean;
     }
-    if (verbose && history.size() % 20 == 0)
-      std::fprintf(stderr, "prestress step %d s %.7f p %.4e Pa (target %.4e) Z %.2f\n", out.steps,
-                   s, p_now, target,
-                   2.0 * static_cast<double>(sys.n_contacts()) / static_cast<double>(r0.size()));
-    progress(in, {"prestress", static_cast<int>(history.size()), in.prestress_max_steps / interval,
-                  p_now});
+    if (in.on_progress) {
+      PackingProgress q{"prestress", static_cast<int>(history.size()),
+                        in.prestress_max_steps / interval, p_now};
+      q.wall_stress = p_now;
+      q.coordination = 2.0 * static_cast<double>(sys.n_contacts()) / static_cast<double>(r0.size());
+      progress(in, q);
+    }
     if (out.converged) break;
     s = std::clamp(s + gain * (1 - p_now / target), 0.99, 1.01);
     scale_grains(sys.mutable_particles(), r0, s, in.material.density);
