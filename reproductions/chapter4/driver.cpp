@@ -5,6 +5,8 @@
 // to a back-face stress of 10 MPa (Sec. 4.4.1): the confined modulus (initial and stiffened),
 // alpha(t), the average-face vs back-face response, and the rotational-resistance family
 // (Sec. 4.4.2). Reference values and bands live in targets.json (full) / targets_smoke.json.
+#include <omp.h>
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -237,7 +239,7 @@ int main(int argc, char** argv) {
     const auto rows = ch4::upscaling_study(scene_json, scene_path, args.set_dir(), k_cal, base, b, ns, 1e6, limit);
     study = "\n\n**Speed against error of the upscaling factor N** (calibrated k; deviation of sigma_t(strain) "
             "from the N = " + fmt("%g", upscale) + " curve between back stresses of 1 and 10 MPa on it; wall times "
-            "on one core of this machine):\n\n" + ch4::upscaling_table(base, b, ch4::wall_layer(scene_json, P.particles), upscale, rows);
+            "on this machine with " + std::to_string(omp_get_max_threads()) + " OpenMP thread(s)):\n\n" + ch4::upscaling_table(base, b, ch4::wall_layer(scene_json, P.particles), upscale, rows);
     harness::Plot uc{"upscaling_curves.png", "sigma_t vs strain for upscaling factors N", "strain (-)", "stress (MPa)", {}, {}, {}};
     harness::Plot ue{"upscaling_cost.png", "Cost vs deviation from the finest N", "case wall time (s)", "RMS deviation of sigma_t (MPa)", {}, {}, {}};
     uc.series.push_back({"N = " + fmt("%g", upscale), ch4::scaled(h.strain, 1, n), ch4::scaled(h.stress_back, 1e-6, n)});
