@@ -22,7 +22,9 @@ struct UpscalingRow {
   double rms = 0, max = 0;   ///< |sigma_t(N) - sigma_t(ref)| over the reference's strain range, Pa
   double toe_strain = NAN;   ///< strain at the first back stress >= lo (the end of the toe)
   WallLayer layer;           ///< solid fractions of the packing (whole, core)
-  std::vector<double> strain, stress;  ///< sigma_t(strain) to the first 10 MPa sample, Pa
+  double rms_finest = NAN;   ///< the same against the finest N's curve (compare_with_finest)
+  std::vector<double> strain, stress;  ///< sigma_t(strain), the whole run, Pa
+  long i_end = 0;            ///< samples up to the first at the limit (10 MPa), or all
   bool ok = false;
   std::string failure;
 };
@@ -35,9 +37,22 @@ std::vector<UpscalingRow> upscaling_study(const nlohmann::json& j, const std::st
                                           const CaseResult& reference, const Measures& ref_m,
                                           const std::vector<double>& ns, double lo, double limit);
 
+/// The deviation of every curve from the finest N's, as the issue asks for ("against the
+/// finest N you can afford"), when a row is finer than the reference: RMS |sigma_t(N) -
+/// sigma_t(finest)| at equal strain over the finest curve's samples from back stress `lo` up
+/// to its largest stress (the finest specimens may not reach 10 MPa within the pulse), where
+/// the other curve has data. Sets each row's rms_finest.
+struct FinestComparison {
+  double n = NAN;              ///< the finest N (NaN: the reference is the finest)
+  double top = NAN;            ///< Pa, the largest back stress of its curve (window's end)
+  double reference_rms = NAN;  ///< Pa, the reference's deviation from it
+};
+FinestComparison compare_with_finest(std::vector<UpscalingRow>& rows, const CaseResult& reference,
+                                     double reference_n, double lo);
+
 /// Markdown table of the study (the reference, whose packing has `ref_layer`, first).
 std::string upscaling_table(const CaseResult& reference, const Measures& ref_m,
                             const WallLayer& ref_layer, double reference_n,
-                            const std::vector<UpscalingRow>& rows);
+                            const std::vector<UpscalingRow>& rows, const FinestComparison& finest);
 
 }  // namespace kolsky::ch4
