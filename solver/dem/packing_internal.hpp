@@ -1,6 +1,6 @@
 // Internals shared by the packing files (packing.cpp: generation; packing_census.cpp: the
-// census of a finished packing; prestress.cpp): a uniform cell grid over the packing cylinder,
-// and the progress hook.
+// census of a finished packing; prestress.cpp; wall_layer.cpp): a uniform cell grid over the
+// packing cylinder, and the progress hook.
 #pragma once
 #include <algorithm>
 #include <vector>

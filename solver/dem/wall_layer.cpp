@@ -5,6 +5,7 @@
 #include <string>
 
 #include "core/errors.hpp"
+#include "dem/packing_internal.hpp"
 
 namespace kolsky::dem {
 
@@ -47,30 +48,12 @@ WallLayerProfile wall_layer_profile(const Particles& p, double diameter, double 
   out.solid.assign(n_bins, 0);
 
   // Grains on a cell grid of side >= the largest diameter: a grain holding a point has its
-  // centre in the point's cell or a neighbouring one.
+  // centre in the point's cell or a neighbouring one (a centre just outside the cylinder is
+  // clamped into the edge cell, which the points next to it visit too).
   double r_max = 0;
   for (double r : p.radius) r_max = std::max(r_max, r);
-  const double cell = std::max(2 * r_max, spacing);
-  const double x0 = -R - r_max, z0 = -r_max;
-  const int nc_xy = static_cast<int>((diameter + 2 * r_max) / cell) + 1;
-  const int nc_z = static_cast<int>((length + 2 * r_max) / cell) + 1;
-  auto cell_of = [&](double u, double lo, int n) {
-    return std::clamp(static_cast<int>(std::floor((u - lo) / cell)), 0, n - 1);
-  };
-  auto cell_index = [&](int a, int b, int c) { return (static_cast<long>(c) * nc_xy + b) * nc_xy + a; };
-  const long n_cells = static_cast<long>(nc_xy) * nc_xy * nc_z;
-  std::vector<int> start(n_cells + 1, 0), members(p.size());
-  std::vector<long> home(p.size());
-  for (std::size_t i = 0; i < p.size(); ++i) {
-    home[i] = cell_index(cell_of(p.x[i].x, x0, nc_xy), cell_of(p.x[i].y, x0, nc_xy),
-                         cell_of(p.x[i].z, z0, nc_z));
-    ++start[home[i] + 1];
-  }
-  for (long c = 0; c < n_cells; ++c) start[c + 1] += start[c];
-  {
-    std::vector<int> fill(start.begin(), start.end() - 1);
-    for (std::size_t i = 0; i < p.size(); ++i) members[fill[home[i]]++] = static_cast<int>(i);
-  }
+  CellGrid grid(std::max(2 * r_max, spacing), R, length);
+  for (std::size_t i = 0; i < p.size(); ++i) grid.insert(p.x[i], static_cast<int>(i));
 
   const int n_xy = static_cast<int>(diameter / spacing), n_z = static_cast<int>(length / spacing);
   // Centre the lattice in the bounding box so that it is symmetric about the axis.
@@ -81,10 +64,8 @@ WallLayerProfile wall_layer_profile(const Particles& p, double diameter, double 
 #pragma omp for schedule(static)
     for (int iz = 0; iz < n_z; ++iz) {
       const double z = off_z + iz * spacing;
-      const int cz = cell_of(z, z0, nc_z);
       for (int iy = 0; iy < n_xy; ++iy) {
         const double y = off_xy + iy * spacing;
-        const int cy = cell_of(y, x0, nc_xy);
         for (int ix = 0; ix < n_xy; ++ix) {
           const double x = off_xy + ix * spacing;
           const double rr = std::sqrt(x * x + y * y);
@@ -92,21 +73,9 @@ WallLayerProfile wall_layer_profile(const Particles& p, double diameter, double 
           const double to_wall = std::min({R - rr, z, length - z});
           const std::size_t bin = std::min(n_bins - 1, static_cast<std::size_t>(to_wall / bin_width));
           ++pts[bin];
-          const int cx = cell_of(x, x0, nc_xy);
-          bool inside = false;
-          for (int c = std::max(0, cz - 1); c <= std::min(nc_z - 1, cz + 1) && !inside; ++c)
-            for (int b = std::max(0, cy - 1); b <= std::min(nc_xy - 1, cy + 1) && !inside; ++b) {
-              const long row = cell_index(0, b, c);
-              const int a0 = std::max(0, cx - 1), a1 = std::min(nc_xy - 1, cx + 1);
-              for (int k = start[row + a0]; k < start[row + a1 + 1]; ++k) {
-                const int g = members[k];
-                const Vec3 d{x - p.x[g].x, y - p.x[g].y, z - p.x[g].z};
-                if (norm2(d) < p.radius[g] * p.radius[g]) {
-                  inside = true;
-                  break;
-                }
-              }
-            }
+          const bool inside = !grid.visit({x, y, z}, [&](int g) {
+            return norm2(Vec3{x, y, z} - p.x[g]) >= p.radius[g] * p.radius[g];
+          });
           sol[bin] += inside;
         }
       }
