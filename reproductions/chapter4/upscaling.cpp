@@ -11,12 +11,11 @@ namespace kolsky::ch4 {
 
 namespace {
 
-// sigma_t at strain e on the curve (strain, stress)[0, n), linear between samples; the strain
-// is made monotone by its running maximum (it may dip by round-off before the arrival).
-double stress_at(const std::vector<double>& strain, const std::vector<double>& stress, long n,
-                 double e) {
+// sigma_t at strain e on the curve (strain, stress), linear between samples; the strain is
+// made monotone by its running maximum (it may dip by round-off before the arrival).
+double stress_at(const std::vector<double>& strain, const std::vector<double>& stress, double e) {
   double prev_e = -1e300, prev_s = 0;
-  for (long i = 0; i < n; ++i) {
+  for (std::size_t i = 0; i < strain.size(); ++i) {
     const double ei = std::max(strain[i], prev_e);
     if (ei >= e) {
       if (i == 0 || ei == prev_e) return stress[i];
@@ -25,6 +24,28 @@ double stress_at(const std::vector<double>& strain, const std::vector<double>& s
     prev_e = ei, prev_s = stress[i];
   }
   return NAN;  // beyond the curve
+}
+
+// |sigma(strain) - ref_stress| at the strains of the samples [i0, i1) of a reference curve,
+// where the curve (strain, stress) has data: RMS and largest (NaN, 0 without any).
+struct Deviation {
+  double rms = NAN, max = 0;
+};
+Deviation deviation(const std::vector<double>& strain, const std::vector<double>& stress,
+                    const std::vector<double>& ref_strain, const std::vector<double>& ref_stress,
+                    long i0, long i1) {
+  Deviation d;
+  double sum = 0;
+  long cnt = 0;
+  for (long i = i0; i < i1; ++i) {
+    const double s = stress_at(strain, stress, ref_strain[i]);
+    if (!std::isfinite(s)) continue;
+    const double e = std::abs(s - ref_stress[i]);
+    sum += e * e, ++cnt;
+    d.max = std::max(d.max, e);
+  }
+  if (cnt > 0) d.rms = std::sqrt(sum / cnt);
+  return d;
 }
 
 }  // namespace
@@ -64,17 +85,9 @@ std::vector<UpscalingRow> upscaling_study(const nlohmann::json& j, const std::st
       row.i_end = m.i_end > 0 ? m.i_end : static_cast<long>(c.h.t.size());
       row.strain = c.h.strain;
       row.stress = c.h.stress_back;
-      const long nc = static_cast<long>(c.h.strain.size());
-      double sum = 0;
-      long cnt = 0;
-      for (long i = ref_m.i_lo; i < ref_m.i_end; ++i) {
-        const double s = stress_at(c.h.strain, c.h.stress_back, nc, rh.strain[i]);
-        if (!std::isfinite(s)) continue;
-        const double d = std::abs(s - rh.stress_back[i]);
-        sum += d * d, ++cnt;
-        row.max = std::max(row.max, d);
-      }
-      row.rms = cnt > 0 ? std::sqrt(sum / cnt) : NAN;
+      const Deviation d = deviation(c.h.strain, c.h.stress_back, rh.strain, rh.stress_back,
+                                    ref_m.i_lo, ref_m.i_end);
+      row.rms = d.rms, row.max = d.max;
     }
     std::printf("upscaling N = %g: %zu grains, %s, case %.1f s, packing %.1f s%s, RMS deviation %.2f MPa, "
                 "solid fraction %.4f (core %.4f), strain at 1 MPa %.4f\n",
@@ -100,14 +113,7 @@ FinestComparison compare_with_finest(std::vector<UpscalingRow>& rows, const Case
   long i0 = 0;
   while (i0 <= i_top && f->stress[i0] < lo) ++i0;
   auto rms_against = [&](const std::vector<double>& strain, const std::vector<double>& stress) {
-    double sum = 0;
-    long cnt = 0;
-    for (long i = i0; i <= i_top; ++i) {
-      const double s = stress_at(strain, stress, static_cast<long>(strain.size()), f->strain[i]);
-      if (!std::isfinite(s)) continue;
-      sum += (s - f->stress[i]) * (s - f->stress[i]), ++cnt;
-    }
-    return cnt > 0 ? std::sqrt(sum / cnt) : NAN;
+    return deviation(strain, stress, f->strain, f->stress, i0, i_top + 1).rms;
   };
   out.reference_rms = rms_against(reference.h.strain, reference.h.stress_back);
   const double finest_n = f->n;  // f points into rows
