@@ -270,6 +270,24 @@ TEST(TestDemNeighbours, PairListMatchesBruteForceAndCarriesHistory) {
   EXPECT_EQ(one.first, two.first);
 }
 
+// Each pair is searched from its larger grain, and at equal radii from the lower index: with
+// only two radii in the packing nearly every candidate is a tie, and no pair may be lost or
+// found twice.
+TEST(TestDemNeighbours, EqualRadiiAreFoundOnce) {
+  Particles p = random_packing(2500, 1e-4, 4e-4, {{0, 0, 0}, {9e-3, 9e-3, 9e-3}}, 7, 0, kSand);
+  for (std::size_t q = 0; q < p.size(); ++q) p.radius[q] = q % 3 == 0 ? 3e-4 : 1.5e-4;
+  const double skin = 5e-5;
+  const PairList a = build_pair_list(p.x, p.radius, skin, {});
+  const auto ref = brute_pairs(p, skin);
+  ASSERT_EQ(a.size(), ref.size());
+  std::size_t k = 0;
+  for (const auto& [i, j] : ref) {
+    EXPECT_EQ(a.i[k], i);
+    EXPECT_EQ(a.j[k], j);
+    ++k;
+  }
+}
+
 TEST(TestDemAssembly, BuildersGiveValidAssemblies) {
   const Particles lat = cubic_lattice(3, 4, 5, 1e-3, 2e-3, {0, 0, 0}, 0, kSand);
   EXPECT_EQ(lat.size(), 60u);

@@ -87,55 +87,87 @@ PairList build_pair_list(const std::vector<Vec3>& x, const std::vector<double>& 
   PairList out;
   out.first.assign(static_cast<std::size_t>(n) + 1, 0);
   if (n == 0) return out;
-  const double r_max = *std::max_element(r.begin(), r.end());
-  const CellGrid g = make_grid(x, r, 0.5 * (2 * r_max + skin));
+  const double r_min = *std::min_element(r.begin(), r.end());
+  const CellGrid g = make_grid(x, r, 2 * r_min + skin);
 
-  // Each thread scans a contiguous block of particles into its own buffer; the buffers are
-  // concatenated in block order, so the list is the same for every thread count.
-  std::vector<std::vector<int>> partners;
-  std::vector<int> count(n, 0);
+  // (1) Each pair is found once, from its larger grain (equal radii: from the lower index),
+  // within the reach 2 r_i + skin >= r_i + r_j + skin, so the small grains, most of the
+  // packing, search only a small neighbourhood. Each thread scans a contiguous block of
+  // grains and records (owner, partner) = (min, max) as one key.
+  // (2) Keys are placed by owner (counts per thread and owner, then offsets), and (3) each
+  // owner's partners sorted, which makes the list the same for any thread count.
+  std::vector<std::vector<std::uint64_t>> found;
+  std::vector<std::vector<int>> at;  // at[t][q]: thread t's count, then its next slot, for owner q
 #pragma omp parallel if (n >= 2048)  // small systems: a parallel region costs more than it saves
   {
     const int nt = omp_get_num_threads(), t = omp_get_thread_num();
 #pragma omp single
-    partners.resize(nt);
+    {
+      found.resize(nt);
+      at.resize(nt);
+    }
     const int b0 = static_cast<int>(static_cast<std::int64_t>(n) * t / nt);
     const int b1 = static_cast<int>(static_cast<std::int64_t>(n) * (t + 1) / nt);
-    std::vector<int>& mine = partners[t];
+    std::vector<std::uint64_t>& keys = found[t];
+    std::size_t m = 0;  // keys found; keys[m ...] is scratch
     for (int i = b0; i < b1; ++i) {
       const Vec3 p = x[i];
-      const double reach = r[i] + r_max + skin;
+      const double ri = r[i];
+      const double reach = 2 * ri + skin;
       const int x0 = g.clamp_index(p.x - reach - g.lo.x, g.nx);
       const int x1 = g.clamp_index(p.x + reach - g.lo.x, g.nx);
       const int y0 = g.clamp_index(p.y - reach - g.lo.y, g.ny);
       const int y1 = g.clamp_index(p.y + reach - g.lo.y, g.ny);
       const int z0 = g.clamp_index(p.z - reach - g.lo.z, g.nz);
       const int z1 = g.clamp_index(p.z + reach - g.lo.z, g.nz);
-      const std::size_t before = mine.size();
       for (int cz = z0; cz <= z1; ++cz)
         for (int cy = y0; cy <= y1; ++cy) {
           // Cells x0..x1 of a row are consecutive, so are their items.
           const int row = (cz * g.ny + cy) * g.nx;
-          for (int s = g.start[row + x0], s1 = g.start[row + x1 + 1]; s < s1; ++s) {
+          const int s0 = g.start[row + x0], s1 = g.start[row + x1 + 1];
+          if (keys.size() < m + static_cast<std::size_t>(s1 - s0))
+            keys.resize(2 * (m + static_cast<std::size_t>(s1 - s0)));
+          // Branch-free: about half the candidates are larger than i, in no predictable order.
+          for (int s = s0; s < s1; ++s) {
             const int j = g.items[s];
-            if (j <= i) continue;
-            const double cut = r[i] + g.item[s].r + skin;
-            if (norm2(g.item[s].x - p) < cut * cut) mine.push_back(j);
+            const double rj = g.item[s].r;
+            const double cut = ri + rj + skin;
+            const bool from_here = (rj < ri) | ((rj == ri) & (j > i));
+            const bool near = norm2(g.item[s].x - p) < cut * cut;
+            const auto lo = static_cast<std::uint64_t>(j < i ? j : i);
+            const auto hi = static_cast<std::uint64_t>(j < i ? i : j);
+            keys[m] = lo << 32 | hi;
+            m += from_here & near;
           }
         }
-      std::sort(mine.begin() + static_cast<std::ptrdiff_t>(before), mine.end());
-      count[i] = static_cast<int>(mine.size() - before);
     }
+    keys.resize(m);
+    std::vector<int>& mine = at[t];
+    mine.assign(static_cast<std::size_t>(n), 0);
+    for (std::uint64_t k : keys) ++mine[k >> 32];
 #pragma omp barrier
 #pragma omp single
     {
-      for (int i = 0; i < n; ++i) out.first[i + 1] = out.first[i] + count[i];
+      for (int q = 0; q < n; ++q) {
+        int slot = out.first[q];
+        for (auto& c : at) {
+          const int count = c[q];
+          c[q] = slot;
+          slot += count;
+        }
+        out.first[q + 1] = slot;
+      }
       out.j.resize(out.first[n]);
       out.i.resize(out.first[n]);
       out.history.assign(out.first[n], Vec3{});
     }
-    std::copy(mine.begin(), mine.end(), out.j.begin() + out.first[b0]);
+    for (std::uint64_t k : keys) out.j[mine[k >> 32]++] = static_cast<int>(k & 0xffffffffu);
+#pragma omp barrier
     for (int i = b0; i < b1; ++i) {
+      // A handful of partners per owner: insertion sort.
+      for (int k = out.first[i] + 1; k < out.first[i + 1]; ++k)
+        for (int q = k; q > out.first[i] && out.j[q - 1] > out.j[q]; --q)
+          std::swap(out.j[q - 1], out.j[q]);
       std::fill(out.i.begin() + out.first[i], out.i.begin() + out.first[i + 1], i);
       // Carry the history: merge the sorted partner lists of i in the old and new lists.
       if (old.first.size() != out.first.size()) continue;

@@ -1,12 +1,12 @@
-// Verlet pair list for polydisperse spheres. A uniform cell grid of side (2 r_max + skin)/2
-// is searched, for each particle i, over the cells that overlap the cube of half-width
-// r_i + r_max + skin around it, so small grains do not scan the whole stencil a large-grain
-// cell size would impose (a single-level scheme: adequate for the 4:1 size ratio of the sand
-// packings; a hierarchical grid pays off only for much wider ratios). A pair (i < j) is kept
-// when |x_i - x_j| < r_i + r_j + skin; the list stays valid until some particle has moved
-// more than skin/2 (DemSystem checks this). Pairs are sorted by (i, j) and grouped by i
-// (CSR), identically for any thread count; the tangential history of a pair that is in both
-// the old and the new list is carried over (keyed by the pair (i, j)).
+// Verlet pair list for polydisperse spheres. Each pair is searched from its larger grain, for
+// partners no larger than itself, over the cells of a uniform grid of side 2 r_min + skin that
+// overlap the cube of half-width 2 r_i + skin around it: the many small grains scan 27 small
+// cells, only the few large ones a wide stencil (a single-level scheme: adequate for the 4:1
+// size ratio of the sand packings). A pair (i < j) is kept when |x_i - x_j| < r_i + r_j +
+// skin; the list stays valid until some particle has moved more than skin/2 (DemSystem checks
+// this). Pairs are sorted by (i, j) and grouped by i (CSR), identically for any thread count;
+// the tangential history of a pair that is in both the old and the new list is carried over
+// (keyed by the pair (i, j)).
 #pragma once
 #include <vector>
 
