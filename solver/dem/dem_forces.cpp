@@ -9,6 +9,7 @@
 #include <limits>
 
 #include "dem/dem_system.hpp"
+#include "dem/hertz_mindlin_batch.hpp"
 
 namespace kolsky::dem {
 
@@ -28,9 +29,10 @@ void DemSystem::pair_forces(const Law& law, double dt) {
   // j lies in i's block (as the partner's owners all do, in pair order, before j's own sum),
   // else stored in j's slot for gather(). So each grain's sums have one order for any number
   // of threads, and the batched kernel (dem_forces_batched.cpp) keeps the same order.
+  // Work-shared within compute_forces' region; no barrier at the end (the walls follow).
   const PairArrays a = pair_arrays();
   const int n = a.n, block = a.block, n_blocks = a.n_blocks;
-#pragma omp parallel for schedule(static) if (n >= kParallelMin)
+#pragma omp for schedule(static) nowait
   for (int blk = 0; blk < n_blocks; ++blk) {
     const int i0 = blk * block, i1 = i0 + std::min(n - i0, block);
     for (int q = i0; q < i1; ++q) a.f[q] = a.tq[q] = Vec3{};
@@ -112,7 +114,7 @@ void DemSystem::plane_forces(const Law& law, int k, double dt) {
   const auto c0 = static_cast<std::ptrdiff_t>(wall_first_[k]);
   const auto c1 = static_cast<std::ptrdiff_t>(wall_first_[k + 1]);
   ContactStore& out = wall_out_;
-#pragma omp parallel for schedule(static) if (c1 - c0 >= kParallelMin)
+#pragma omp for schedule(dynamic, kWallChunk) nowait
   for (std::ptrdiff_t c = c0; c < c1; ++c) {
     const int i = wall_particle_[c];
     const double overlap = p_.radius[i] - dot(p_.x[i] - base, nw);
@@ -139,7 +141,7 @@ void DemSystem::tube_forces(const Law& law, int k, double dt) {
   const auto c0 = static_cast<std::ptrdiff_t>(wall_first_[slot]);
   const auto c1 = static_cast<std::ptrdiff_t>(wall_first_[slot + 1]);
   ContactStore& out = wall_out_;
-#pragma omp parallel for schedule(static) if (c1 - c0 >= kParallelMin)
+#pragma omp for schedule(dynamic, kWallChunk) nowait
   for (std::ptrdiff_t c = c0; c < c1; ++c) {
     const int i = wall_particle_[c];
     const double dx = p_.x[i].x - t.wall.cx, dy = p_.x[i].y - t.wall.cy;
@@ -176,7 +178,7 @@ void DemSystem::gather() {
   Vec3* f = p_.f.data();
   Vec3* tq = p_.torque.data();
   double* diss = dissipated_.data();
-#pragma omp parallel for schedule(static) if (n >= kParallelMin)
+#pragma omp for schedule(static)
   for (std::ptrdiff_t q = 0; q < n; ++q) {
     Vec3 F = f[q], T = tq[q];
     double D = 0;
@@ -203,15 +205,30 @@ void DemSystem::gather() {
 void DemSystem::compute_forces(double dt) {
   if (particles_changed_) refresh_after_edit();
   if (needs_rebuild()) rebuild();
-  if (const auto* hm = std::get_if<HertzMindlin>(&law_); hm && opt_.batched_hertz_mindlin)
-    hertz_mindlin_pair_forces(*hm, dt);
-  else
-    std::visit([&](const auto& law) { pair_forces(law, dt); }, law_);
-  for (int k = 0; k < static_cast<int>(planes_.size()); ++k)
-    std::visit([&](const auto& law) { plane_forces(law, k, dt); }, planes_[k].wall.law);
-  for (int k = 0; k < static_cast<int>(tubes_.size()); ++k)
-    std::visit([&](const auto& law) { tube_forces(law, k, dt); }, tubes_[k].wall.law);
-  gather();
+  const auto* hm = std::get_if<HertzMindlin>(&law_);
+  const bool batched = hm && opt_.batched_hertz_mindlin;
+  const std::vector<HertzMindlinConstants> table =
+      batched ? hertz_mindlin_table(*hm) : std::vector<HertzMindlinConstants>{};
+  const int n_mat = batched ? hm->n_materials() : 0;
+  // One region for the whole evaluation. The pair sweep splits whole owner blocks statically
+  // (17 blocks of pack_35k split 8 / 9); a thread that finishes its blocks goes on to the wall
+  // contacts, handed out in chunks as threads come free, so the walls fill the gap instead of
+  // waiting for it. Wall contacts read only positions, velocities and spins and write their
+  // own slots, so they may run beside the sweep, and which thread takes which chunk changes
+  // no result. The barrier then separates the slots' writers from gather().
+#pragma omp parallel if (static_cast<std::ptrdiff_t>(p_.size()) >= kParallelMin)
+  {
+    if (batched)
+      hertz_mindlin_pair_forces(table.data(), n_mat, dt);
+    else
+      std::visit([&](const auto& law) { pair_forces(law, dt); }, law_);
+    for (int k = 0; k < static_cast<int>(planes_.size()); ++k)
+      std::visit([&](const auto& law) { plane_forces(law, k, dt); }, planes_[k].wall.law);
+    for (int k = 0; k < static_cast<int>(tubes_.size()); ++k)
+      std::visit([&](const auto& law) { tube_forces(law, k, dt); }, tubes_[k].wall.law);
+#pragma omp barrier
+    gather();
+  }
   // Wall resultants in candidate order (deterministic), and the planes' work on the grains
   // by the trapezoid rule over the plane's displacement since the last evaluation.
   for (std::size_t w = 0; w < planes_.size() + tubes_.size(); ++w) {

@@ -17,25 +17,18 @@
 
 namespace kolsky::dem {
 
-void DemSystem::hertz_mindlin_pair_forces(const HertzMindlin& law, double dt) {
-  const int n = static_cast<int>(p_.size());
-  const int n_mat = law.n_materials();
-  std::vector<HertzMindlinConstants> constants;
-  constants.reserve(static_cast<std::size_t>(n_mat) * n_mat);
-  for (int a = 0; a < n_mat; ++a)
-    for (int b = 0; b < n_mat; ++b) constants.push_back(batch_constants(law.pair(a, b)));
-
+void DemSystem::hertz_mindlin_pair_forces(const HertzMindlinConstants* table, int n_mat,
+                                          double dt) {
   const PairArrays a = pair_arrays();
-  const HertzMindlinConstants* table = constants.data();
   constexpr int kCap = HertzMindlinBatch::kCapacity;
   constexpr int kAhead = 16;  // pairs: about the latency of an L3 hit over a pair's work
 
-  const int block = a.block, n_blocks = a.n_blocks;
+  const int n = a.n, block = a.block, n_blocks = a.n_blocks;
 
-  // Each thread takes a contiguous run of whole owner blocks; the results do not depend on the
+  // Called by every thread of compute_forces' parallel region (no barrier at the end). Each
+  // thread takes a contiguous run of whole owner blocks; the results do not depend on the
   // split (each contact is evaluated alone, each grain's sums are formed within its block in
   // pair order, and its cross-block slots are added by gather() in slot order).
-#pragma omp parallel if (n >= kParallelMin)
   {
     const int nt = omp_get_num_threads(), th = omp_get_thread_num();
     const int b0 = static_cast<int>(static_cast<std::int64_t>(n_blocks) * th / nt);

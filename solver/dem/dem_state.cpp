@@ -121,13 +121,13 @@ void DemSystem::restore_state(const DemState& s) {
   old.j = s.pair_j;
   old.history = s.pair_history;
   pairs_ = std::move(old);
-  pair_out_.resize(pairs_.size());  // all inactive until the next evaluation
+  pair_out_.resize(pairs_.size(), 0);  // all inactive; slots sized by the coming rebuild
   wall_first_.assign(n_slots + 1, 0);
   for (int w : s.wall_slot) ++wall_first_[static_cast<std::size_t>(w) + 1];
   for (std::size_t w = 0; w < n_slots; ++w) wall_first_[w + 1] += wall_first_[w];
   wall_particle_ = s.wall_particle;
   wall_history_ = s.wall_history;
-  wall_out_.resize(wall_particle_.size());
+  wall_out_.resize(wall_particle_.size(), wall_particle_.size());
   wall_normal_.assign(wall_particle_.size(), 0.0);
   list_valid_ = false;  // rebuilt (with the carry above) at the next force evaluation
   max_disp2_ = 0;

@@ -19,8 +19,8 @@ double RollingRetardation::factor(double dt) const {
   return std::pow(factor_per_reference_step, dt / reference_dt);
 }
 
-void DemSystem::ContactStore::resize(std::size_t n) {
-  out.assign(n, ContactOut{});
+void DemSystem::ContactStore::resize(std::size_t n, std::size_t n_slots) {
+  out.assign(n_slots, ContactOut{});
   active.assign(n, 0);
   elastic.assign(n, 0.0);
 }
@@ -243,14 +243,6 @@ bool DemSystem::needs_rebuild() const {
 
 void DemSystem::rebuild() {
   pairs_ = build_pair_list(p_.x, p_.radius, skin_, pairs_);
-  pair_out_.resize(pairs_.size());
-  // A carried non-zero history counts as active: the batched sweep clears the history of a
-  // pair only when it goes from active to not touching (dem_forces_batched.cpp). The slots
-  // stay zero; every evaluation rewrites active[] before anything reads it.
-  for (std::size_t k = 0; k < pairs_.size(); ++k) {
-    const Vec3& h = pairs_.history[k];
-    pair_out_.active[k] = h.x != 0 || h.y != 0 || h.z != 0;
-  }
   build_wall_candidates();
   const int n = static_cast<int>(p_.size());
   // Counting sort into slots, by partner (then pair order), of the pairs whose partner lies in
@@ -267,6 +259,14 @@ void DemSystem::rebuild() {
   std::vector<int> fill(partner_first_.begin(), partner_first_.end() - 1);
   for (std::size_t k = 0; k < pairs_.size(); ++k)
     pair_slot_[k] = crosses(k) ? fill[pairs_.j[k]]++ : -1;
+  pair_out_.resize(pairs_.size(), static_cast<std::size_t>(partner_first_[n]));
+  // A carried non-zero history counts as active: the batched sweep clears the history of a
+  // pair only when it goes from active to not touching (dem_forces_batched.cpp). The slots
+  // stay zero; every evaluation rewrites active[] before anything reads it.
+  for (std::size_t k = 0; k < pairs_.size(); ++k) {
+    const Vec3& h = pairs_.history[k];
+    pair_out_.active[k] = h.x != 0 || h.y != 0 || h.z != 0;
+  }
   wall_first_of_.assign(static_cast<std::size_t>(n) + 1, 0);
   for (int q : wall_particle_) ++wall_first_of_[q + 1];
   for (int q = 0; q < n; ++q) wall_first_of_[q + 1] += wall_first_of_[q];
@@ -313,7 +313,7 @@ void DemSystem::build_wall_candidates() {
   wall_particle_.swap(particle);
   wall_first_.swap(first);
   wall_history_.swap(history);
-  wall_out_.resize(wall_particle_.size());
+  wall_out_.resize(wall_particle_.size(), wall_particle_.size());
   wall_normal_.resize(wall_particle_.size());
 }
 

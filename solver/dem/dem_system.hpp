@@ -16,7 +16,8 @@
 
 namespace kolsky::dem {
 
-struct DemState;  // dem_state.hpp: checkpoint/restart state
+struct DemState;               // dem_state.hpp: checkpoint/restart state
+struct HertzMindlinConstants;  // hertz_mindlin_batch.hpp
 
 /// Rotational resistance by angular-velocity retardation, Eqs. 4.12-4.14.
 struct RollingRetardation {
@@ -115,6 +116,9 @@ class DemSystem {
   // Loops shorter than this run on one thread: a parallel region costs microseconds, which
   // would dominate the one- and two-particle verification runs.
   static constexpr std::ptrdiff_t kParallelMin = 2048;
+  // Wall contacts per chunk handed to a free thread (compute_forces): small enough to even out
+  // the threads' sweeps, large enough that taking a chunk (one atomic) costs nothing.
+  static constexpr int kWallChunk = 256;
 
   struct PlaneState {
     PlaneWall wall;
@@ -139,12 +143,13 @@ class DemSystem {
   // owners are swept), and the slots and energies of pairs that do not touch hold zeros
   // (cleared when a contact separates, and at every rebuild), so that gather() and energy()
   // add every one without a branch: adding +0 to a sum that started at +0 leaves it bitwise
-  // unchanged (such a sum is never -0). Only the first (cross-block) slots of out are used.
+  // unchanged (such a sum is never -0). For pairs, out holds the cross-block slots only.
   struct ContactStore {
     std::vector<ContactOut> out;
     std::vector<unsigned char> active;
     std::vector<double> elastic;  // pairs only
-    void resize(std::size_t n);  // all inactive, all zero
+    // n contacts (active, elastic), n_slots outputs (out); all inactive, all zero.
+    void resize(std::size_t n, std::size_t n_slots);
   };
 
   // Raw views of what the two pair kernels (dem_forces.cpp, dem_forces_batched.cpp) read and
@@ -185,7 +190,8 @@ class DemSystem {
 
   void compute_forces(double dt);
   template <class Law> void pair_forces(const Law& law, double dt);
-  void hertz_mindlin_pair_forces(const HertzMindlin& law, double dt);  // dem_forces_batched.cpp
+  // dem_forces_batched.cpp; `table`: hertz_mindlin_table() of the law.
+  void hertz_mindlin_pair_forces(const HertzMindlinConstants* table, int n_mat, double dt);
   template <class Law> void plane_forces(const Law& law, int k, double dt);
   template <class Law> void tube_forces(const Law& law, int k, double dt);
   void gather();

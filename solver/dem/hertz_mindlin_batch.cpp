@@ -15,6 +15,15 @@ HertzMindlinConstants batch_constants(const HertzMindlinPair& p) {
           p.tangential.friction, p.tangential_damping_scale};
 }
 
+std::vector<HertzMindlinConstants> hertz_mindlin_table(const HertzMindlin& law) {
+  const int n_mat = law.n_materials();
+  std::vector<HertzMindlinConstants> constants;
+  constants.reserve(static_cast<std::size_t>(n_mat) * n_mat);
+  for (int a = 0; a < n_mat; ++a)
+    for (int b = 0; b < n_mat; ++b) constants.push_back(batch_constants(law.pair(a, b)));
+  return constants;
+}
+
 // One clone per instruction set, chosen once at load time by the CPU (GCC function
 // multiversioning), so every thread and every run on a machine takes the same one; without
 // contraction all clones give the same bits. The build itself stays portable (no -march).

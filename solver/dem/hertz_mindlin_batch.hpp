@@ -28,6 +28,8 @@ struct HertzMindlinConstants {
 };
 
 HertzMindlinConstants batch_constants(const HertzMindlinPair& p);
+/// batch_constants of every material pair (a, b) of `law`, at index a x n_materials + b.
+std::vector<HertzMindlinConstants> hertz_mindlin_table(const HertzMindlin& law);
 
 /// Inputs and outputs of up to kCapacity touching contacts, one array per scalar. Inputs:
 /// d = x_j - x_i, radii, masses, dv = v_j - v_i, both spins, the history, the constants.
