@@ -17,6 +17,7 @@
 #include <benchmark/benchmark.h>
 #include <omp.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <cstdio>
 #include <filesystem>
@@ -68,8 +69,14 @@ bool read_pack(const std::string& path, Specimen& s) {
     s.particles.add({x, y, z}, d / 2, 0, tmp);
   }
   // The file lists grains largest first, in random places; order them cell by cell (LAMMPS
-  // does the same by default, atom_modify sort) so contact partners sit close in memory.
-  dem::sort_spatially(s.particles, 1.2e-3);
+  // sorts its atoms too by default, atom_modify sort) so contact partners sit close in
+  // memory: along the Morton curve of cells of the smallest diameter, which keeps partners in
+  // all three directions near (12 % of the listed pairs cross a 2048-grain owner block and
+  // 8 % lie over 1365 grains apart, against 19 % and 17 % for sort_spatially's rows of 1.2 mm
+  // cells; docs/dem.md, "Performance").
+  double d_min = std::numeric_limits<double>::infinity();
+  for (double r : s.particles.radius) d_min = std::min(d_min, 2 * r);
+  if (s.particles.size() > 0) dem::sort_morton(s.particles, d_min);
   return s.particles.size() > 0;
 }
 

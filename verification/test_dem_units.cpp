@@ -310,5 +310,25 @@ TEST(TestDemAssembly, BuildersGiveValidAssemblies) {
                InputError);
 }
 
+// On a full 4 x 4 x 4 lattice with one grain per cell, the Morton order puts the grain of cell
+// (cx, cy, cz) at the index whose bits interleave those of cx, cy and cz (x lowest): written
+// here bit by bit, independently of the solver's bit tricks.
+TEST(TestDemAssembly, MortonOrderInterleavesTheCellBits) {
+  Particles p = cubic_lattice(4, 4, 4, 1e-4, 1e-3, {0, 0, 0}, 0, kSand);
+  std::vector<int> reversed(p.size());
+  for (std::size_t k = 0; k < p.size(); ++k) reversed[k] = static_cast<int>(p.size() - 1 - k);
+  p.permute(reversed);
+  sort_morton(p, 0.999e-3);  // just under the spacing: cell index = lattice index
+  for (int m = 0; m < 64; ++m) {
+    int c[3] = {0, 0, 0};
+    for (int bit = 0; bit < 6; ++bit) c[bit % 3] |= ((m >> bit) & 1) << (bit / 3);
+    EXPECT_NEAR(p.x[m].x, c[0] * 1e-3, 1e-12) << m;
+    EXPECT_NEAR(p.x[m].y, c[1] * 1e-3, 1e-12) << m;
+    EXPECT_NEAR(p.x[m].z, c[2] * 1e-3, 1e-12) << m;
+  }
+  EXPECT_THROW(sort_morton(p, 0.0), InputError);
+  EXPECT_THROW(sort_spatially(p, 1e-12), InputError);  // 3 mm / 1e-12 m: beyond 2^20 cells
+}
+
 }  // namespace
 }  // namespace kolsky::dem
