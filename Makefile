@@ -20,7 +20,7 @@ help:
 	@echo "  make reproduce     every reproduction set at full scale -> $(REPORTS)/<set>/"
 	@echo "  make reproduce-<set>   one set: $(SETS)"
 	@echo "  make reproduce-chapter2  Chapter 2 (EOS back-calculation, equilibrium, water content; ~5 min)"
-	@echo "  make reproduce-chapter4  Chapter 4 DEM SHPB, N = 2: 4 runs + upscaling and seed studies (~40 min from scratch, ~17 min cached; see reproductions/chapter4/README.md)"
+	@echo "  make reproduce-chapter4  Chapter 4 DEM SHPB, N = 2: 4 runs + upscaling and seed studies (~40 min from scratch, ~13 min cached on 2 threads; see reproductions/chapter4/README.md)"
 	@echo "  make reproduce-chapterN  N = 3, 5 (not implemented yet)"
 	@echo "  make bench         Google Benchmark -> benchmarks/results/<date>_<commit>_<bench>.json"
 	@echo "  make clean         remove $(BUILD)/ and $(REPORTS)/"

@@ -25,10 +25,11 @@ void DemSystem::hertz_mindlin_pair_forces(const HertzMindlinConstants* table, in
 
   const int n = a.n, block = a.block, n_blocks = a.n_blocks;
 
-  // Called by every thread of compute_forces' parallel region (no barrier at the end). Each
-  // thread takes a contiguous run of whole owner blocks; the results do not depend on the
-  // split (each contact is evaluated alone, each grain's sums are formed within its block in
-  // pair order, and its cross-block slots are added by gather() in slot order).
+  // Called by every thread of compute_forces' parallel region (no barrier at the end); the
+  // block below is this thread's share. Each thread takes a contiguous run of whole owner
+  // blocks; the results do not depend on the split (each contact is evaluated alone, each
+  // grain's sums are formed within its block in pair order, and its cross-block slots are
+  // added by gather() in slot order).
   {
     const int nt = omp_get_num_threads(), th = omp_get_thread_num();
     const int b0 = static_cast<int>(static_cast<std::int64_t>(n_blocks) * th / nt);
