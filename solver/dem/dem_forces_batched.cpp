@@ -61,17 +61,14 @@ void DemSystem::hertz_mindlin_pair_forces(const HertzMindlinConstants* table, in
         for (int k = k0; k < k1; ++k) {
           const int i = a.pi[k], j = a.pj[k];
           // Partners a grid layer away (thousands of grains) miss the L2 cache: request their
-          // position some pairs ahead, and now what (2) and (4) will need if the pair touches.
-          // The histories are read in (2) and written in (4) for touching pairs only, so the
-          // hardware sees no steady stream: request them here too, in pair order.
+          // position some pairs ahead. The histories are read in (2) and written in (4) for
+          // touching pairs only, so the hardware sees no steady stream: request them here too,
+          // in pair order. (Requesting the partner's velocity, spin and force line as well no
+          // longer pays: docs/dem.md, "Performance", item 11.)
           if (k + kAhead < k_end) {
             __builtin_prefetch(&a.x[a.pj[k + kAhead]]);
             __builtin_prefetch(&a.hist[k + kAhead], 1);
           }
-          __builtin_prefetch(&a.v[j]);
-          __builtin_prefetch(&a.w[j]);
-          const int sk = a.slot[k];  // -1: partner in this block, its side goes to f[j]
-          __builtin_prefetch(sk >= 0 ? static_cast<const void*>(&a.out[sk]) : &a.f[j], 1);
           const Vec3 d = a.x[j] - a.x[i];
           const double rsum = a.rad[i] + a.rad[j];
           const bool touch = !(norm2(d) >= rsum * rsum);
