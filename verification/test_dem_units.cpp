@@ -233,18 +233,23 @@ std::set<std::pair<int, int>> brute_pairs(const Particles& p, double skin) {
   return s;
 }
 
-TEST(TestDemNeighbours, PairListMatchesBruteForceAndCarriesHistory) {
-  Particles p = random_packing(2500, 1e-4, 4e-4, {{0, 0, 0}, {9e-3, 9e-3, 9e-3}}, 42, 0, kSand);
-  const double skin = 5e-5;
-  const PairList a = build_pair_list(p.x, p.radius, skin, {});
+// The list holds exactly the brute-force pairs, in (i, j) order (std::set's order).
+void expect_brute_force_list(const PairList& a, const Particles& p, double skin) {
   const auto ref = brute_pairs(p, skin);
   ASSERT_EQ(a.size(), ref.size());
   std::size_t k = 0;
-  for (const auto& [i, j] : ref) {  // std::set order is (i, j) order: the list's order
+  for (const auto& [i, j] : ref) {
     EXPECT_EQ(a.i[k], i);
     EXPECT_EQ(a.j[k], j);
     ++k;
   }
+}
+
+TEST(TestDemNeighbours, PairListMatchesBruteForceAndCarriesHistory) {
+  Particles p = random_packing(2500, 1e-4, 4e-4, {{0, 0, 0}, {9e-3, 9e-3, 9e-3}}, 42, 0, kSand);
+  const double skin = 5e-5;
+  const PairList a = build_pair_list(p.x, p.radius, skin, {});
+  expect_brute_force_list(a, p, skin);
   // History follows the pair through a rebuild after the particles moved.
   PairList b = a;
   for (std::size_t q = 0; q < b.size(); ++q) b.history[q] = {double(b.i[q]), double(b.j[q]), 1};
@@ -278,14 +283,7 @@ TEST(TestDemNeighbours, EqualRadiiAreFoundOnce) {
   for (std::size_t q = 0; q < p.size(); ++q) p.radius[q] = q % 3 == 0 ? 3e-4 : 1.5e-4;
   const double skin = 5e-5;
   const PairList a = build_pair_list(p.x, p.radius, skin, {});
-  const auto ref = brute_pairs(p, skin);
-  ASSERT_EQ(a.size(), ref.size());
-  std::size_t k = 0;
-  for (const auto& [i, j] : ref) {
-    EXPECT_EQ(a.i[k], i);
-    EXPECT_EQ(a.j[k], j);
-    ++k;
-  }
+  expect_brute_force_list(a, p, skin);
 }
 
 TEST(TestDemAssembly, BuildersGiveValidAssemblies) {
