@@ -6,7 +6,7 @@ CMAKE_FLAGS ?= -DCMAKE_BUILD_TYPE=Release
 REPORTS ?= reports
 SETS    := verification bars chapter2 chapter4
 
-.PHONY: all build deps configure test check reproduce bench help clean \
+.PHONY: all build deps configure test check reproduce bench help clean rebaseline gate \
         reproduce-verification reproduce-bars \
         reproduce-chapter2 reproduce-chapter3 reproduce-chapter4 reproduce-chapter5
 
@@ -22,6 +22,9 @@ help:
 	@echo "  make reproduce-chapter2  Chapter 2 (EOS back-calculation, equilibrium, water content; ~5 min)"
 	@echo "  make reproduce-chapter4  Chapter 4 DEM SHPB, N = 2: 4 runs + upscaling and seed studies (~40 min from scratch, ~13 min cached on 2 threads; see reproductions/chapter4/README.md)"
 	@echo "  make reproduce-chapterN  N = 3, 5 (not implemented yet)"
+	@echo "  make rebaseline SET=<set> REASON=\"...\" [SCALE=smoke|full] [RUNS=n]"
+	@echo "                     rewrite reproductions/<set>/baseline_<scale>.json, log it in reproductions/BASELINES.md"
+	@echo "  make gate          the regression gate alone, on the smoke results of the last make test"
 	@echo "  make bench         Google Benchmark -> benchmarks/results/<date>_<commit>_<bench>.json"
 	@echo "  make clean         remove $(BUILD)/ and $(REPORTS)/"
 
@@ -50,6 +53,12 @@ reproduce-verification reproduce-bars reproduce-chapter2 reproduce-chapter4: rep
 
 reproduce-chapter3 reproduce-chapter5:
 	@echo "$@: not implemented yet (see the open issues); no report written" >&2; exit 1
+
+rebaseline: build
+	@bash scripts/rebaseline.sh $(BUILD) "$(SET)" "$(or $(SCALE),smoke)" "$(RUNS)" "$(REASON)"
+
+gate:
+	@$(BUILD)/reproductions/kolsky_gate check --results $(BUILD)/reports-smoke --scale smoke --all
 
 bench: build
 	@bash scripts/run-benchmarks.sh $(BUILD)/benchmarks benchmarks/results

@@ -11,6 +11,7 @@
 #include "bar/material.hpp"
 #include "checks/check.hpp"
 #include "common/driver_args.hpp"
+#include "common/perturb.hpp"
 #include "harness/report.hpp"
 #include "scene/scene.hpp"
 #include "shpb/simulation.hpp"
@@ -18,11 +19,6 @@
 using namespace kolsky;
 
 namespace {
-
-nlohmann::json read_json(const std::string& path) {
-  std::ifstream f(path);
-  return nlohmann::json::parse(f);
-}
 
 // Sample indices with t in [t0, t1].
 std::pair<long, long> window(const std::vector<double>& t, double t0, double t1) {
@@ -65,7 +61,8 @@ int main(int argc, char** argv) {
 
   // (b) The Song set-up with the elastic stand-in, characteristic bars.
   const std::string scene_path = args.set_dir() + "/scene_" + args.scale + ".json";
-  const auto sc = scene::load_scene(scene_path);
+  const auto sc = scene::parse_scene(repro::read_scene_json(scene_path, args.perturb_seed), scene_path,
+                                     args.set_dir());
   shpb::SimulatedShpb sim(sc.spec);
   const auto run = sim.run();
   if (!run.complete) {
@@ -107,7 +104,7 @@ int main(int argc, char** argv) {
   m.curve("song.stress_strain", ss);
 
   // Sphere-chain incident bar: wave speed from two gauges 2 m apart (contact forces).
-  auto chain_scene = read_json(scene_path);
+  auto chain_scene = repro::read_scene_json(scene_path, args.perturb_seed);
   chain_scene["bars"]["kind"] = "sphere_chain";
   chain_scene["bars"]["incident"]["gauges"] = {3.0, 1.0};
   chain_scene["specimen"]["n_elements"] = 20;

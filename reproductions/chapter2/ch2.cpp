@@ -24,9 +24,6 @@ nlohmann::json read_json(const std::string& path) {
   return nlohmann::json::parse(f);
 }
 
-BaseScene read_base_scene(const std::string& path, const std::string& dir) {
-  return {read_json(path), path, dir};
-}
 
 double unloading_modulus_for(const Table1D& t) {
   double steepest = 0;

@@ -47,7 +47,6 @@ struct BaseScene {
   nlohmann::json json;
   std::string path, dir;
 };
-BaseScene read_base_scene(const std::string& path, const std::string& dir);
 
 /// Runs the case; a solver failure is returned in CaseResult, not thrown.
 CaseResult run_case(const BaseScene& base, const CaseSpec& c);

@@ -16,6 +16,7 @@
 #include "chapter2/compare.hpp"
 #include "chapter2/studies.hpp"
 #include "common/driver_args.hpp"
+#include "common/perturb.hpp"
 #include "harness/report.hpp"
 #include "common/format.hpp"
 
@@ -53,7 +54,8 @@ int main(int argc, char** argv) {
   std::filesystem::create_directories(rep.out_dir);
   auto& m = rep.m;
   const auto targets = ch2::read_json(args.set_dir() + "/targets.json");
-  const auto base = ch2::read_base_scene(args.set_dir() + "/scene_" + args.scale + ".json", args.set_dir());
+  const std::string scene_path = args.set_dir() + "/scene_" + args.scale + ".json";
+  const ch2::BaseScene base{repro::read_scene_json(scene_path, args.perturb_seed), scene_path, args.set_dir()};
   const std::string data = args.repo_root + "/data/digitized/chapter2/";
   const auto reported = ch2::read_json(data + "reported.json");
 

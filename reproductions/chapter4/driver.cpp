@@ -19,6 +19,7 @@
 #include "chapter4/seeds.hpp"
 #include "chapter4/upscaling.hpp"
 #include "common/driver_args.hpp"
+#include "common/perturb.hpp"
 #include "harness/report.hpp"
 #include "common/format.hpp"
 
@@ -57,7 +58,7 @@ int main(int argc, char** argv) {
   // The scene, with the packing cache next to the report (reused by the later cases and by a
   // re-run into the same folder).
   const std::string scene_path = args.set_dir() + "/scene_" + args.scale + ".json";
-  auto scene_json = ch4::read_json(scene_path);
+  auto scene_json = repro::read_scene_json(scene_path, args.perturb_seed);
   const std::string cache = std::filesystem::absolute(rep.out_dir + "/packing_cache").string();
   scene_json["specimen"]["packing_cache"] = cache;
   const double upscale = scene_json["specimen"]["upscale"].get<double>();

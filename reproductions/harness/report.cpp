@@ -3,6 +3,9 @@
 // complete.
 #include "harness/report.hpp"
 
+#include "harness/baseline.hpp"
+#include "harness/gate.hpp"
+
 #include "core/atomic_file.hpp"
 #include "core/errors.hpp"
 
@@ -142,7 +145,7 @@ std::string result_text(const Score& s) {
 }
 
 std::string report_markdown(const ReportInput& in, const std::vector<Score>& scores,
-                            const std::vector<PlotResult>& plots) {
+                            const std::vector<PlotResult>& plots, const BaselineComparison& base) {
   int n_pass = 0, n_fail = 0, n_known = 0, n_unexpected = 0;
   for (const Score& s : scores) {
     if (s.target->status == Status::known_deviation) {
@@ -165,11 +168,13 @@ std::string report_markdown(const ReportInput& in, const std::vector<Score>& sco
     md += "- **Unexpected passes**: known_deviation targets that now pass; remove their "
           "known_deviation note in targets.json.\n";
 
-  md += "\n## Targets\n\n| id | measured | band | reference | unit | source | status | result |\n"
-        "|---|---|---|---|---|---|---|---|\n";
+  md += "\n## Targets\n\n| id | measured | band | vs baseline | reference | unit | source | status | result |\n"
+        "|---|---|---|---|---|---|---|---|---|\n";
   for (const Score& s : scores) {
     const Target& t = *s.target;
+    const GateRow* row = base.row(t.id);
     md += "| " + cell(t.id) + " | " + cell(measured_text(s)) + " | " + cell(band_text(s)) + " | " +
+          (row ? cell(gate_cell(*row)) : std::string("-")) + " | " +
           cell(reference_text(t)) + " | " + cell(t.unit) + " | " + cell(t.reference.source) +
           " | " + to_string(t.status) + " | " + cell(result_text(s)) + " |\n";
   }
@@ -199,6 +204,8 @@ std::string report_markdown(const ReportInput& in, const std::vector<Score>& sco
     md += "\n## Worst points of curve targets\n\n"
           "| id | x_ref | y_ref | nearest measured y | error | allowed | unit | |\n"
           "|---|---|---|---|---|---|---|---|\n" + worst;
+
+  md += baseline_section_markdown(base, in.scale);
 
   std::set<std::string> ids;
   for (const Score& s : scores) ids.insert(s.target->id);
@@ -238,7 +245,9 @@ int write_report(const ReportInput& in) {
 
   const fs::path out(in.out_dir);
   write_file_atomic((out / "results.json").string(), results_json(in, scores).dump(2) + "\n");
-  write_file_atomic((out / "report.md").string(), report_markdown(in, scores, plots));
+  write_measurements(in.out_dir, in.set, in.scale, in.m);
+  const BaselineComparison base = compare_with_committed(in.repo_root, in.set, in.scale, in.m);
+  write_file_atomic((out / "report.md").string(), report_markdown(in, scores, plots, base));
   int n_failed = 0;
   for (const Score& s : scores) n_failed += s.fails_set() ? 1 : 0;
   return n_failed;

@@ -11,6 +11,8 @@
 #include "checks/check.hpp"
 #include "common/driver_args.hpp"
 #include "core/atomic_file.hpp"
+#include "harness/baseline.hpp"
+#include "harness/gate.hpp"
 
 using namespace kolsky;
 
@@ -58,6 +60,12 @@ int main(int argc, char** argv) {
           (c.pass() ? "<span style=\"color:green\">pass</span>"
                     : "<span style=\"color:red\">FAIL</span>") + " |\n";
   }
+  // The regression gate sees every check's value (docs/reproductions.md, "Regression gate").
+  harness::Measurements m;
+  for (const auto& c : checks) m.scalar(c.id, c.got);
+  harness::write_measurements(args.out_dir, "verification", args.scale, m);
+  md += harness::baseline_section_markdown(
+      harness::compare_with_committed(args.repo_root, "verification", args.scale, m), args.scale);
   md += "\n## Notes\n\n";
   for (const auto& c : checks)
     if (!c.note.empty()) md += "- `" + c.id + "`: " + c.note + "\n";
