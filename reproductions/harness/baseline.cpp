@@ -230,7 +230,8 @@ Baseline make_baseline(const MeasurementsFile& base, const std::vector<Measureme
       int flips = 0;
       for (const auto& p : perturbed) flips += p.m.find(id)->holds != m0.holds ? 1 : 0;
       v.gated = flips == 0;
-      v.why = v.gated ? "must not flip (it did not in " + runs + ")"
+      v.why = perturbed.empty() ? std::string("must not flip (no perturbed reruns)")
+              : v.gated         ? "must not flip (it did not in " + runs + ")"
                       : "flips in " + std::to_string(flips) + " of " + runs +
                             ": round-off decides it, shown but not gated";
     } else if (m0.kind == Kind::scalar) {
@@ -246,7 +247,8 @@ Baseline make_baseline(const MeasurementsFile& base, const std::vector<Measureme
         v.why = "finite in some of the " + runs + " and not in others: not gated";
       } else {
         v.tol.atol = std::max(rule.factor * s, rule.atol_floor);
-        v.why = s == 0.0 ? "unchanged in " + runs + "; " + floor_why
+        v.why = perturbed.empty() ? "no perturbed reruns; " + floor_why
+                : s == 0.0        ? "unchanged in " + runs + "; " + floor_why
                          : fmt("%g", rule.factor) + " x the largest change in " + runs + " (" +
                                fmt("%.3g", s) + (m0.value != 0 ? ", " + fmt("%.2g", s / std::fabs(m0.value)) + " relative" : "") +
                                "), plus the " + floor_why;
@@ -274,7 +276,8 @@ Baseline make_baseline(const MeasurementsFile& base, const std::vector<Measureme
       } else {
         v.tol.atol = std::max(rule.factor * sy, rule.atol_floor);
         v.tol_x.atol = std::max(rule.factor * sx, rule.atol_floor);
-        v.why = sx == 0.0 && sy == 0.0
+        v.why = perturbed.empty() ? "no perturbed reruns; " + floor_why
+                : sx == 0.0 && sy == 0.0
                     ? "every point unchanged in " + runs + "; " + floor_why
                     : fmt("%g", rule.factor) + " x the largest pointwise change in " + runs +
                           " (x " + fmt("%.3g", sx) + ", y " + fmt("%.3g", sy) + "), plus the " + floor_why;
