@@ -88,11 +88,11 @@ void randomize_velocities(Particles& p, double speed, std::uint64_t seed) {
 
 namespace {
 
-// Stable sort of the particles by key(cx, cy, cz) of their cell in a grid of side `cell` from
-// the lowest corner; cell indices below 2^20 per axis.
+// Stable order of the particles by key(cx, cy, cz) of their cell in a grid of side `cell`
+// from the lowest corner; cell indices below 2^20 per axis. order[k] = old index of new k.
 template <class Key>
-void sort_by_cell(Particles& p, double cell, Key key_of) {
-  if (p.size() == 0) return;
+std::vector<int> order_by_cell(const Particles& p, double cell, Key key_of) {
+  if (p.size() == 0) return {};
   Vec3 lo = p.x[0], hi = p.x[0];
   for (const auto& x : p.x) {
     lo = {std::min(lo.x, x.x), std::min(lo.y, x.y), std::min(lo.z, x.z)};
@@ -111,7 +111,7 @@ void sort_by_cell(Particles& p, double cell, Key key_of) {
   std::vector<int> order(p.size());
   std::iota(order.begin(), order.end(), 0);
   std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return key[a] < key[b]; });
-  p.permute(order);
+  return order;
 }
 
 // The bits of v (< 2^21) spread to every third bit.
@@ -127,15 +127,17 @@ std::uint64_t spread_bits(std::uint64_t v) {
 }  // namespace
 
 void sort_spatially(Particles& p, double cell) {
-  sort_by_cell(p, cell, [](std::uint64_t cx, std::uint64_t cy, std::uint64_t cz) {
+  p.permute(order_by_cell(p, cell, [](std::uint64_t cx, std::uint64_t cy, std::uint64_t cz) {
     return cz << 40 | cy << 20 | cx;
-  });
+  }));
 }
 
-void sort_morton(Particles& p, double cell) {
-  sort_by_cell(p, cell, [](std::uint64_t cx, std::uint64_t cy, std::uint64_t cz) {
+std::vector<int> morton_order(const Particles& p, double cell) {
+  return order_by_cell(p, cell, [](std::uint64_t cx, std::uint64_t cy, std::uint64_t cz) {
     return spread_bits(cx) | spread_bits(cy) << 1 | spread_bits(cz) << 2;
   });
 }
+
+void sort_morton(Particles& p, double cell) { p.permute(morton_order(p, cell)); }
 
 }  // namespace kolsky::dem

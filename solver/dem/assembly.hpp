@@ -42,5 +42,7 @@ void sort_spatially(Particles& p, double cell);
 /// all three directions sit close in memory, not only those along x (docs/dem.md,
 /// "Performance"). Same errors as sort_spatially.
 void sort_morton(Particles& p, double cell);
+/// The order sort_morton applies: new index k takes old particle order[k].
+std::vector<int> morton_order(const Particles& p, double cell);
 
 }  // namespace kolsky::dem

@@ -14,12 +14,13 @@
 namespace kolsky::dem {
 
 DemSystem::PairArrays DemSystem::pair_arrays() {
-  const int n = static_cast<int>(p_.size()), block = opt_.owner_block;
+  const int n = static_cast<int>(p_.size());
   return {pairs_.first.data(), pairs_.i.data(), pairs_.j.data(), pair_slot_.data(),
           p_.material.data(), p_.x.data(), p_.v.data(), p_.omega.data(), p_.radius.data(),
           p_.mass.data(), pairs_.history.data(), p_.f.data(), p_.torque.data(),
           dissipated_.data(), pair_out_.elastic.data(), pair_out_.out.data(),
-          pair_out_.active.data(), n, block, n / block + (n % block != 0)};
+          pair_out_.active.data(), block_first_.data(), n,
+          static_cast<int>(block_first_.size()) - 1};
 }
 
 template <class Law>
@@ -31,10 +32,10 @@ void DemSystem::pair_forces(const Law& law, double dt) {
   // of threads, and the batched kernel (dem_forces_batched.cpp) keeps the same order.
   // Work-shared within compute_forces' region; no barrier at the end (the walls follow).
   const PairArrays a = pair_arrays();
-  const int n = a.n, block = a.block, n_blocks = a.n_blocks;
+  const int n_blocks = a.n_blocks;
 #pragma omp for schedule(static) nowait
   for (int blk = 0; blk < n_blocks; ++blk) {
-    const int i0 = blk * block, i1 = i0 + std::min(n - i0, block);
+    const int i0 = a.block_first[blk], i1 = a.block_first[blk + 1];
     for (int q = i0; q < i1; ++q) a.f[q] = a.tq[q] = Vec3{};
     for (int i = i0; i < i1; ++i) {
       const Vec3 xi = a.x[i], vi = a.v[i], wi = a.w[i];

@@ -23,7 +23,7 @@ void DemSystem::hertz_mindlin_pair_forces(const HertzMindlinConstants* table, in
   constexpr int kCap = HertzMindlinBatch::kCapacity;
   constexpr int kAhead = 16;  // pairs: about the latency of an L3 hit over a pair's work
 
-  const int n = a.n, block = a.block, n_blocks = a.n_blocks;
+  const int n_blocks = a.n_blocks;
 
   // Called by every thread of compute_forces' parallel region (no barrier at the end); the
   // block below is this thread's share. Each thread takes a contiguous run of whole owner
@@ -51,7 +51,7 @@ void DemSystem::hertz_mindlin_pair_forces(const HertzMindlinConstants* table, in
       D = 0;
     };
     for (int blk = b0; blk < b1; ++blk) {
-      const int i0 = blk * block, i1 = block < n - i0 ? i0 + block : n;
+      const int i0 = a.block_first[blk], i1 = a.block_first[blk + 1];
       for (int q = i0; q < i1; ++q) a.f[q] = a.tq[q] = Vec3{};  // partner sides accumulate here
       cur = i0;
       for (int k0 = a.first[i0], k_end = a.first[i1]; k0 < k_end; k0 += kCap) {

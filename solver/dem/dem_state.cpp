@@ -35,6 +35,10 @@ DemState DemSystem::save_state() const {
   s.pending_dt = pending_dt_;
   s.forces_valid = forces_valid_;
   s.n_rebuilds = n_rebuilds_;
+  s.owner_blocks = block_first_;
+  s.removed_dissipated = removed_dissipated_;
+  s.edited_energy = edited_energy_;
+  s.added_since_sort = added_since_sort_;
   if (pairs_.first.size() == p_.size() + 1) {  // else no list yet (or edited particles)
     for (std::size_t k = 0; k < pairs_.size(); ++k) {
       if (!stored(pairs_.history[k])) continue;
@@ -60,14 +64,19 @@ DemState DemSystem::save_state() const {
 }
 
 void DemSystem::restore_state(const DemState& s) {
+  // The particle count may differ from the system's: edits (breakage) change it.
   const std::size_t n = s.particles.size();
-  if (n != p_.size())
-    bad_state("the state has " + std::to_string(n) + " particles, the system " +
-              std::to_string(p_.size()));
+  if (n == 0) bad_state("the state has no particles");
   if (s.planes.size() != planes_.size() || s.tubes.size() != tubes_.size())
     bad_state("the state has other walls than the system");
   if (s.dissipated.size() != n) bad_state("dissipated energy: one value per particle needed");
   validate(s.particles, materials_.size());
+  const auto& b = s.owner_blocks;
+  if (!b.empty()) {
+    bool ok = b.size() >= 2 && b.front() == 0 && b.back() == static_cast<int>(n);
+    for (std::size_t k = 1; ok && k < b.size(); ++k) ok = b[k] > b[k - 1];
+    if (!ok) bad_state("owner blocks must rise strictly from 0 to the particle count");
+  }
   const std::size_t n_pairs = s.pair_i.size();
   if (s.pair_j.size() != n_pairs || s.pair_history.size() != n_pairs)
     bad_state("pair histories: i, j and history differ in length");
@@ -94,6 +103,11 @@ void DemSystem::restore_state(const DemState& s) {
   pending_dt_ = s.pending_dt;
   forces_valid_ = s.forces_valid;
   n_rebuilds_ = s.n_rebuilds;
+  removed_dissipated_ = s.removed_dissipated;
+  edited_energy_ = s.edited_energy;
+  added_since_sort_ = s.added_since_sort;
+  if (b.empty()) reset_owner_blocks();
+  else block_first_ = b;
   particles_changed_ = false;
   skin_ = opt_.skin_over_min_radius * *std::min_element(p_.radius.begin(), p_.radius.end());
   stable_dt_ = compute_stable_dt();

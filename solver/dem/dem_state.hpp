@@ -30,6 +30,12 @@ struct DemState {
   double pending_dt = 0;            ///< > 0: begin_step done, finish_step pending (s)
   bool forces_valid = false;        ///< particles.f/torque hold the current state's forces
   std::size_t n_rebuilds = 0;       ///< bookkeeping only (restored, then counts on)
+  /// Owner blocks (DemSystem::block_first); empty: the uniform blocks of a fresh system (a
+  /// checkpoint written before particle edits existed).
+  std::vector<int> owner_blocks;
+  double removed_dissipated = 0;    ///< dissipation of grains edits removed, J
+  double edited_energy = 0;         ///< DemEnergy::edited, J
+  std::size_t added_since_sort = 0; ///< grains edits added since the last locality sort
 
   // Tangential histories of pairs (i < j) with a non-zero history, sorted by (i, j).
   std::vector<int> pair_i, pair_j;

@@ -55,7 +55,15 @@ DemSystem::DemSystem(Particles particles, std::vector<Material> materials, Conta
     throw InputError("", "dem.rolling.reference_dt", "must be > 0");
   skin_ = opt_.skin_over_min_radius * *std::min_element(p_.radius.begin(), p_.radius.end());
   dissipated_.assign(p_.size(), 0.0);
+  reset_owner_blocks();
   stable_dt_ = compute_stable_dt();
+}
+
+void DemSystem::reset_owner_blocks() {
+  const int n = static_cast<int>(p_.size()), block = opt_.owner_block;
+  block_first_.clear();
+  for (int i0 = 0; i0 < n; i0 += block) block_first_.push_back(i0);
+  block_first_.push_back(n);
 }
 
 int DemSystem::add_plane(const PlaneWall& w) {
@@ -103,6 +111,7 @@ void DemSystem::refresh_after_edit() {
   skin_ = opt_.skin_over_min_radius * *std::min_element(p_.radius.begin(), p_.radius.end());
   dissipated_.resize(p_.size(), 0.0);
   if (pairs_.first.size() != p_.size() + 1) pairs_ = PairList{};
+  if (block_first_.back() != static_cast<int>(p_.size())) reset_owner_blocks();
   wall_particle_.clear();
   wall_first_.clear();
   stable_dt_ = compute_stable_dt();
@@ -248,10 +257,10 @@ void DemSystem::rebuild() {
   // Counting sort into slots, by partner (then pair order), of the pairs whose partner lies in
   // another owner block; a partner in the owner's block gets its side in the sweep (slot -1).
   partner_first_.assign(static_cast<std::size_t>(n) + 1, 0);
-  const int block = opt_.owner_block;
-  auto crosses = [&](std::size_t k) {
-    return pairs_.i[k] / block != pairs_.j[k] / block;
-  };
+  std::vector<int> block_of(static_cast<std::size_t>(n));
+  for (std::size_t b = 0; b + 1 < block_first_.size(); ++b)
+    std::fill(block_of.begin() + block_first_[b], block_of.begin() + block_first_[b + 1], static_cast<int>(b));
+  auto crosses = [&](std::size_t k) { return block_of[pairs_.i[k]] != block_of[pairs_.j[k]]; };
   for (std::size_t k = 0; k < pairs_.size(); ++k)
     if (crosses(k)) ++partner_first_[pairs_.j[k] + 1];
   for (int q = 0; q < n; ++q) partner_first_[q + 1] += partner_first_[q];
@@ -328,6 +337,8 @@ DemEnergy DemSystem::energy() const {
     e.elastic += 0.5 * t.stiffness * t.u * t.u;
   }
   for (double d : dissipated_) e.dissipated += d;
+  e.dissipated += removed_dissipated_;
+  e.edited = edited_energy_;
   for (const auto& s : planes_) e.wall_work += s.work;
   return e;
 }

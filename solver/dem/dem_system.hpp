@@ -43,6 +43,28 @@ struct DemOptions {
   /// Spatially sorted grains have most partners within a few thousand indices (docs/dem.md,
   /// "Performance"). Must be > 0.
   int owner_block = 2048;
+  /// After an edit (DemSystem::edit), when the grains added since the last spatial sort exceed
+  /// this fraction of all grains, the system re-sorts them (Morton order of cells of the
+  /// smallest diameter, assembly.hpp) and starts fresh owner blocks: fragments appended at the
+  /// end of the arrays lose the locality the sweep relies on (docs/dem.md, "Performance").
+  /// A re-sort changes each grain's summation order (results move by round-off, not physics).
+  /// 0: never. Without edits it never fires.
+  double resort_added_fraction = 0.1;
+};
+
+/// One particle edit (a grain replaced by its fragments, Sec. 5.2.3): remove the grains
+/// `removed` (indices, unique, any order), then append `added` (positions, velocities, spins,
+/// radii, materials, masses and inertias; their forces are ignored). Survivors keep their
+/// order, added grains follow them (unless the edit triggers a locality re-sort).
+struct ParticleEdit {
+  std::vector<int> removed;
+  Particles added;
+};
+
+/// Where an edit put every grain: old_to_new[i] = the new index of old grain i (-1: removed),
+/// added_at[k] = the new index of added grain k.
+struct EditMap {
+  std::vector<int> old_to_new, added_at;
 };
 
 /// Energy ledger (J). kinetic + elastic + dissipated - wall_work is conserved up to the
@@ -52,6 +74,10 @@ struct DemEnergy {
   double elastic = 0;     ///< contact springs and the tube's hoop spring
   double dissipated = 0;  ///< dashpots, sliding, rolling friction and rolling retardation
   double wall_work = 0;   ///< work done by moving planes on the particles
+  /// Energy taken out by particle edits: the removed grains' kinetic energy and the energy
+  /// stored in their contacts, minus the added grains' kinetic and contact energy (J). So
+  /// kinetic + elastic + dissipated + edited - wall_work stays conserved across edits.
+  double edited = 0;
 };
 
 class DemSystem {
@@ -83,7 +109,24 @@ class DemSystem {
   const Particles& particles() const { return p_; }
   /// Write access (velocities, positions, even radii or added particles): the next step or
   /// force evaluation revalidates, rederives skin and stable dt, and rebuilds the lists.
+  /// Changing the count this way drops every contact history; edit() keeps them.
   Particles& mutable_particles();
+  /// Removes and adds grains between two steps (dem_edit.cpp), carrying what survives: the
+  /// tangential histories of pairs and wall contacts whose grains both remain, every
+  /// per-particle array, the forces, and the owner-block partition (each surviving grain
+  /// stays in its block, so its sums keep their order). A grain removed with touching
+  /// contacts, or added overlapping something, makes the forces be evaluated again at once
+  /// (as a first step would: history unchanged, no time advance); an edit that touches no
+  /// contact leaves the following steps bitwise those of a run without it. Energy moved by
+  /// the edit goes to DemEnergy::edited. Returns where every grain went (a locality re-sort,
+  /// DemOptions::resort_added_fraction, is included in the map). Throws
+  /// kolsky::InputError ("dem.edit...") for a bad index or particle, std::logic_error
+  /// between begin_step() and finish_step().
+  EditMap edit(const ParticleEdit& e);
+  /// Owner blocks as index ranges [block_first()[b], block_first()[b+1]) (DemOptions::owner_block).
+  const std::vector<int>& block_first() const { return block_first_; }
+  /// How many locality re-sorts (DemOptions::resort_added_fraction) edits have triggered.
+  std::size_t n_resorts() const { return n_resorts_; }
   const std::vector<Material>& materials() const { return materials_; }
   double time() const { return time_; }
 
@@ -107,8 +150,9 @@ class DemSystem {
   bool finite() const;
 
   /// Checkpoint and restart (dem_state.hpp; defined in dem_state.cpp). restore_state needs a
-  /// system built the same way (same particle count, walls); it throws kolsky::InputError
-  /// ("dem.state") when the counts disagree. The continued run is bitwise the uninterrupted one.
+  /// system built with the same materials, law and walls; the particles (their count too, after
+  /// edits) and the owner blocks come from the state. It throws kolsky::InputError
+  /// ("dem.state") when the walls disagree. The continued run is bitwise the uninterrupted one.
   DemState save_state() const;
   void restore_state(const DemState& s);
 
@@ -162,7 +206,8 @@ class DemSystem {
     double *diss, *stored;
     ContactOut* out;
     unsigned char* active;
-    int n, block, n_blocks;  // grains, owner-block size, blocks
+    const int* block_first;  // owner block b: grains [block_first[b], block_first[b+1])
+    int n, n_blocks;         // grains, blocks
 
     /// Partner j's side of touching pair k (force on i, torque on j, half the dissipation):
     /// added to j now when j is in the owner's block (slot -1: the partner's owners all come
@@ -204,6 +249,12 @@ class DemSystem {
   void check_dt(double dt) const;
   double compute_stable_dt() const;
   void refresh_after_edit();
+  void reset_owner_blocks();
+  // dem_edit.cpp: carry the contact lists and per-contact outputs through an index map
+  // (general: a pair whose order flips gets its history negated), and the locality re-sort.
+  void remap_contacts(const std::vector<int>& old_to_new, std::size_t n_new);
+  bool added_grains_touch(std::size_t first_added) const;
+  std::vector<int> resort_for_locality();  // returns old_to_new of the re-sort
 
   Particles p_;
   std::vector<Material> materials_;
@@ -232,6 +283,12 @@ class DemSystem {
 
   std::vector<Vec3> x_at_build_;
   std::vector<double> dissipated_;  // per particle, J
+  // Owner blocks (DemOptions::owner_block): uniform at construction and after a re-sort,
+  // carried through edits. Never empty blocks.
+  std::vector<int> block_first_;
+  double removed_dissipated_ = 0;  // dissipation booked by grains an edit removed, J
+  double edited_energy_ = 0;       // DemEnergy::edited, J
+  std::size_t added_since_sort_ = 0, n_resorts_ = 0;
 };
 
 }  // namespace kolsky::dem

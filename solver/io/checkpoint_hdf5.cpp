@@ -97,6 +97,10 @@ void put_dem(hid_t g, const dem::DemSpecimenState& s) {
   h5::write_attr(g, "pending_dt", d.pending_dt);
   h5::write_attr(g, "forces_valid", std::int64_t{d.forces_valid});
   h5::write_attr(g, "n_rebuilds", static_cast<std::int64_t>(d.n_rebuilds));
+  put_ints(g, "owner_blocks", d.owner_blocks);
+  h5::write_attr(g, "removed_dissipated", d.removed_dissipated);
+  h5::write_attr(g, "edited_energy", d.edited_energy);
+  h5::write_attr(g, "added_since_sort", static_cast<std::int64_t>(d.added_since_sort));
   const FaceState& f = s.faces;
   h5::write_doubles(g, "faces", std::vector<double>{f.intrusion_front, f.intrusion_back,
                                                     f.rate_front, f.rate_back});
@@ -191,6 +195,12 @@ dem::DemSpecimenState get_dem(hid_t g) {
   d.pending_dt = h5::read_attr_double(g, "pending_dt");
   d.forces_valid = h5::read_attr_int(g, "forces_valid") != 0;
   d.n_rebuilds = static_cast<std::size_t>(h5::read_attr_int(g, "n_rebuilds"));
+  // Absent in checkpoints written before particle edits: uniform blocks, nothing edited.
+  if (h5::exists(g, "owner_blocks")) d.owner_blocks = get_ints(g, "owner_blocks");
+  if (H5Aexists(g, "removed_dissipated") > 0) d.removed_dissipated = h5::read_attr_double(g, "removed_dissipated");
+  if (H5Aexists(g, "edited_energy") > 0) d.edited_energy = h5::read_attr_double(g, "edited_energy");
+  if (H5Aexists(g, "added_since_sort") > 0)
+    d.added_since_sort = static_cast<std::size_t>(h5::read_attr_int(g, "added_since_sort"));
   const std::vector<double> f = h5::read_doubles(g, "faces");
   if (f.size() != 4) throw std::runtime_error("specimen/faces must hold 4 values");
   s.faces = {f[0], f[1], f[2], f[3]};
