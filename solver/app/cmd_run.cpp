@@ -1,5 +1,7 @@
-// `kolsky run SCENE.json [-o OUT.h5] [--threads N] [--quiet] [--checkpoint-every S
-//  [--checkpoint-file CK.h5]] [--restart CK.h5]`
+// `kolsky run SCENE.json [-o OUT.h5] [--gauges-csv G.csv] [--threads N] [--quiet]
+//  [--checkpoint-every S [--checkpoint-file CK.h5]] [--restart CK.h5]`: builds the scene's SHPB
+// assembly (shpb/assembly.hpp), runs it, and writes its probes by name plus the classic
+// analysis of the face waves.
 #include <omp.h>
 
 #include <algorithm>
@@ -178,8 +180,8 @@ int cmd_run(const std::vector<std::string>& args) {
     // The first gauge of each bar, in the input format of `kolsky analyze`.
     io::CsvTable g;
     g.header = {"time_s", "incident_strain", "transmitted_strain"};
-    g.columns = {r.t, r.probe("incident_gauge_strain").value,
-                 r.probe("transmission_gauge_strain").value};
+    g.columns = {r.t, r.probe(shpb::gauge_probe_name("incident", 0)).value,
+                 r.probe(shpb::gauge_probe_name("transmission", 0)).value};
     io::write_csv(o.gauges_csv, g,
                   "simulated gauge record of " + file + " (strain as measured: compression "
                   "negative); gauges at " + std::to_string(sc.spec.incident.gauges.front()) +

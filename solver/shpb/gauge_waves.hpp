@@ -11,7 +11,7 @@
 // is what the bars' 3-D behaviour does to a classic analysis.
 #pragma once
 #include "shpb/experiment.hpp"
-#include "shpb/simulation.hpp"
+#include "shpb/run_result.hpp"
 
 namespace kolsky::shpb {
 

@@ -1,0 +1,27 @@
+// Optional hooks of SimulatedShpb::run(): checkpoints, a restart state and DEM particle
+// snapshots. Kept apart from simulation.hpp so that the assemblies (which call the snapshot
+// hook from their step) can include it without including the simulation that owns them.
+#pragma once
+#include <functional>
+
+#include "dem/particles.hpp"
+
+namespace kolsky::shpb {
+
+struct ShpbState;  // simulation.hpp: the loop's state after a step, for checkpoint and restart
+
+/// Both hooks are called from the loop's thread.
+struct RunControl {
+  /// Steps between checkpoints (0: none): checkpoint(state) before the steps k, 2k, ...
+  long checkpoint_every = 0;
+  std::function<void(const ShpbState&)> checkpoint;
+  /// Steps between particle snapshots of a DEM specimen (0: none): snapshot(n, t^n, grains)
+  /// at the steps n = 0, k, 2k, ..., with positions, velocities and forces all at t^n.
+  /// Assemblies without grains never call it.
+  long snapshot_every = 0;
+  std::function<void(long step, double t, const dem::Particles&)> snapshot;
+  /// Continue from this state (a checkpoint of a simulation built from the same spec).
+  const ShpbState* resume = nullptr;
+};
+
+}  // namespace kolsky::shpb

@@ -1,0 +1,41 @@
+// What one specimen model adds to the 1-D bar assembly (shpb/one_dim_bars.hpp) beyond the
+// bar/specimen interface of core/specimen_coupling.hpp. One overload per model, chosen at
+// compile time inside the assembly's std::visit, so the generic step and sample code name no
+// model and branch on none:
+//   energy_stored_at_start  energy the specimen may release with no work from the faces; it
+//                           joins the injected energy as the scale of the blow-up bound (a DEM
+//                           packing's residual overlaps: before the pulse arrives the injected
+//                           energy is still ~0, and the ledger's round-off scales with it)
+//   at_forces_evaluated     called between forces() and advance() of step n: the one point of
+//                           a step where positions, velocities and forces all belong to t^n,
+//                           hence where DEM particle snapshots are taken (RunControl::snapshot)
+//   add_model_probes        probes only this model records, appended after the bar gauges
+// A new specimen model adds its three overloads here (the compiler asks for them).
+#pragma once
+#include "bar/specimen_column.hpp"
+#include "dem/dem_specimen.hpp"
+#include "fe/fe_specimen.hpp"
+#include "shpb/probe_record.hpp"
+#include "shpb/run_control.hpp"
+
+namespace kolsky::shpb {
+
+inline double energy_stored_at_start(const bar::SpecimenColumn&) { return 0.0; }
+inline double energy_stored_at_start(const fe::FeSpecimen&) { return 0.0; }
+inline double energy_stored_at_start(const dem::DemSpecimen& d) { return d.initial_elastic_energy(); }
+
+inline void at_forces_evaluated(const bar::SpecimenColumn&, long, double, const RunControl&) {}
+inline void at_forces_evaluated(const fe::FeSpecimen&, long, double, const RunControl&) {}
+/// Inline: this runs every step of a DEM run, and costs two tests when no snapshot is due.
+inline void at_forces_evaluated(const dem::DemSpecimen& d, long n, double t, const RunControl& c) {
+  if (c.snapshot && c.snapshot_every > 0 && n % c.snapshot_every == 0)
+    c.snapshot(n, t, d.system().particles());
+}
+
+inline void add_model_probes(const bar::SpecimenColumn&, ProbeRecords&) {}
+inline void add_model_probes(const fe::FeSpecimen&, ProbeRecords&) {}
+/// Grain kinetic energy, coordination numbers and contact counts. The samplers read d by
+/// reference (probe_record.hpp, "Lifetime").
+void add_model_probes(const dem::DemSpecimen& d, ProbeRecords& out);
+
+}  // namespace kolsky::shpb
