@@ -26,6 +26,8 @@ help:
 	@echo "                     rewrite reproductions/<set>/baseline_<scale>.json, log it in reproductions/BASELINES.md"
 	@echo "  make gate          the regression gate alone, on the smoke results of the last make test"
 	@echo "  make bench         Google Benchmark -> benchmarks/results/<date>_<commit>_<bench>.json"
+	@echo "  make bench-summary figures and tables of benchmarks/results/ -> $(REPORTS)/benchmarks/"
+	@echo "  make bench-check   short run; fails if a speed ratio (kolsky / reference) fell below the tracked one (~1 min)"
 	@echo "  make clean         remove $(BUILD)/ and $(REPORTS)/"
 
 deps:
@@ -62,6 +64,15 @@ gate:
 
 bench: build
 	@bash scripts/run-benchmarks.sh $(BUILD)/benchmarks benchmarks/results
+
+# Benchmark tracking (reports/benchmarks/README.md). Not part of `make test`: bench-check
+# depends on wall time; its margins and their measurement are in scripts/bench-check.sh.
+.PHONY: bench-summary bench-check
+bench-summary: build
+	@$(BUILD)/benchmarks/summarize_benchmarks summary --results benchmarks/results --out $(REPORTS)/benchmarks
+
+bench-check: build
+	@bash scripts/bench-check.sh $(BUILD) benchmarks/results
 
 clean:
 	rm -rf $(BUILD) $(REPORTS)

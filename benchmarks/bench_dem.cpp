@@ -14,6 +14,10 @@
 //     packs them once: the packing's step count does not depend on N, so its cost scales with
 //     the grain count (measured on one core of the development machine: 6 min for N = 1.5,
 //     21 min for N = 1, with the other core busy; OpenMP threads shorten it).
+//   BM_Reference/threads (1, 2): the frozen reference workload (reference_workload.hpp),
+//     registered first; the tracked figure is particle_steps_per_s / ref_pair_updates_per_s
+//     of the same process, per CPU second for 1 thread and per wall second for 2
+//     (reports/benchmarks/README.md, `make bench-check`).
 #include <benchmark/benchmark.h>
 #include <omp.h>
 
@@ -33,6 +37,7 @@
 #include "dem/packing.hpp"
 #include "io/csv.hpp"
 #include "psd/grain_size_curve.hpp"
+#include "reference_workload.hpp"
 
 namespace {
 
@@ -242,6 +247,9 @@ void BM_DemCompaction(benchmark::State& st) {
 void BM_DemUpscale(benchmark::State& st) {
   run(st, upscaled_specimen(static_cast<int>(st.range(0))), 1, 100);
 }
+
+// First, so that `make bench` times it before BM_DemUpscale's packings (minutes on first use).
+[[maybe_unused]] const auto* const kReference = kolsky::bench::register_reference_benchmark();
 
 }  // namespace
 

@@ -9,6 +9,10 @@
 //     steel tube, 480/s, 1.3 ms) end to end through shpb::SimulatedShpb with characteristic
 //     bars (Arg 0) and with meshed bars (Arg 1, run to 1.6 ms: the reflected wave must reach the
 //     incident gauge); "wall_s_per_sim_us" is wall seconds per simulated microsecond.
+//   BM_Reference/threads (1, 2): the frozen reference workload (reference_workload.hpp); the
+//     tracked figure is BM_FeSpecimenStep/10/20's elem_updates_per_s / ref_pair_updates_per_s
+//     (1 thread) of the same process, both per CPU second (reports/benchmarks/README.md,
+//     `make bench-check`).
 // Measured on the shared 2-core development machine under load (docs/fe.md "OpenMP and speed").
 #include <benchmark/benchmark.h>
 
@@ -17,6 +21,7 @@
 
 #include "fe/fe_specimen.hpp"
 #include "fe/meshed_shpb.hpp"
+#include "reference_workload.hpp"
 #include "scene/scene.hpp"
 #include "shpb/simulation.hpp"
 
@@ -116,6 +121,9 @@ void BM_Chapter2Run(benchmark::State& st) {
   st.counters["wall_s_per_sim_us"] = benchmark::Counter(
       sc.spec.time.end_time * 1e6, benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
 }
+
+// Registered first (static initialisation runs in order of definition).
+[[maybe_unused]] const auto* const kReference = kolsky::bench::register_reference_benchmark();
 
 }  // namespace
 

@@ -193,11 +193,16 @@ PlotResult render_plot(const Plot& p, const std::string& out_dir, const std::str
   write_file_atomic((src / (stem + ".gp")).string(), gp);
 
   if (plot_cmd.empty()) return {false, "plot not generated: no data"};
-  if (gnuplot.empty() || gnuplot.ends_with("-NOTFOUND") || access(gnuplot.c_str(), X_OK) != 0)
-    return {false, "plot not generated: gnuplot not available" +
-                       (gnuplot.empty() ? std::string() : " at " + gnuplot)};
+  const std::string why = render_script(gnuplot, out_dir, stem, p.file);
+  return {why.empty(), why.empty() ? "" : "plot not generated: " + why};
+}
 
-  const std::string tmp_name = temporary_name(p.file);  // sibling of the final PNG in out_dir
+std::string render_script(const std::string& gnuplot, const std::string& out_dir,
+                          const std::string& stem, const std::string& png) {
+  if (gnuplot.empty() || gnuplot.ends_with("-NOTFOUND") || access(gnuplot.c_str(), X_OK) != 0)
+    return "gnuplot not available" + (gnuplot.empty() ? std::string() : " at " + gnuplot);
+  const fs::path src = fs::path(out_dir) / "plots_src";
+  const std::string tmp_name = temporary_name(png);  // sibling of the final PNG in out_dir
   const fs::path tmp = fs::path(out_dir) / tmp_name;
   const std::string log = stem + ".log";
   std::string why = run_gnuplot(gnuplot, src.string(), stem + ".gp", "../" + tmp_name, log);
@@ -206,11 +211,11 @@ PlotResult render_plot(const Plot& p, const std::string& out_dir, const std::str
     why = "gnuplot wrote no image";
   if (!why.empty()) {
     fs::remove(tmp, ec);
-    return {false, "plot not generated: " + why + " (script and log in plots_src/)"};
+    return why + " (script and log in plots_src/)";
   }
   fs::remove(src / log, ec);
-  commit_file(tmp.string(), (fs::path(out_dir) / p.file).string());
-  return {true, ""};
+  commit_file(tmp.string(), (fs::path(out_dir) / png).string());
+  return "";
 }
 
 }  // namespace kolsky::harness

@@ -50,4 +50,11 @@ std::string default_gnuplot();
 /// gnuplot failures are returned, with the tail of its output, not thrown.
 PlotResult render_plot(const Plot& p, const std::string& out_dir, const std::string& gnuplot);
 
+/// Renders out_dir/plots_src/<stem>.gp (which sets `outfile` unless given) to out_dir/<png>:
+/// gnuplot by fork/exec in plots_src/ (no shell parses labels or paths), the PNG written under a
+/// temporary name and renamed. Returns "" on success, else why not (gnuplot missing, its exit
+/// status and the tail of its log, no image). Shared by render_plot and the benchmark summary.
+std::string render_script(const std::string& gnuplot, const std::string& out_dir,
+                          const std::string& stem, const std::string& png);
+
 }  // namespace kolsky::harness
