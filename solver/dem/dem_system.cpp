@@ -155,11 +155,14 @@ double DemSystem::stable_dt() const {
 
 void DemSystem::check_dt(double dt) const {
   if (dt > 0 && dt <= stable_dt_ * (1 + 1e-12)) return;  // refreshed by begin_step
+  if (!(dt > 0)) throw InputError("", "dem.dt", "must be > 0");
+  // A step above the limit is a numerical failure, not bad input: the run's own dt was
+  // checked when it was planned, so the limit fell during the run (an edit, a break).
   std::ostringstream s;
-  s << "dt = " << dt << " s must be > 0 and <= the stable limit " << stable_dt_ << " s ("
-    << opt_.dt_safety << " x min(Rayleigh step of the smallest grain, sqrt(m/k) of the "
-    << "stiffest linear contact, tube ring mode))";
-  throw InputError("", "dem.dt", s.str());
+  s << "dem: dt = " << dt << " s is above the stable limit " << stable_dt_ << " s at t = "
+    << time_ << " s (" << opt_.dt_safety << " x min(Rayleigh step of the smallest grain, "
+    << "sqrt(m/k) of the stiffest linear contact, tube ring mode))";
+  throw NumericalError(s.str(), time_);
 }
 
 void DemSystem::step(double dt) {

@@ -96,7 +96,7 @@ class DemSystem {
   /// Largest dt step() accepts (s).
   double stable_dt() const;
   /// One step of size dt (s): begin_step(dt) then finish_step(). Throws kolsky::InputError
-  /// ("dem.dt") if dt > stable_dt().
+  /// ("dem.dt") if dt <= 0, kolsky::NumericalError if dt > stable_dt() (the limit fell).
   void step(double dt);
   /// First half: half kick with the current forces, drift, prescribed walls move.
   void begin_step(double dt);

@@ -159,6 +159,19 @@ RunResult SimulatedShpb::run_on(A& assembly, Progress* progress, const RunContro
     ++r.steps;
   };
   auto sample = [&](double t) {
+    // The loop asks the models for their limit again at every output step: an event during
+    // the run (grains edited or broken) can lower it below the planned dt. A step above it is
+    // a numerical failure (exit 3, what was sampled kept), not an input error.
+    if (spec_.time.check_stability) {
+      const double limit = assembly.stable_dt();
+      if (schedule_.dt > limit * (1 + 1e-12)) {
+        std::ostringstream msg;
+        msg << std::setprecision(4) << "time step " << schedule_.dt << " s is above the stable limit "
+            << limit << " s the models report at t = " << t << " s (planned against " << schedule_.stable_dt
+            << " s; something during the run lowered it)";
+        throw NumericalError(msg.str(), t);
+      }
+    }
     assembly.observe(t);  // throws before anything of this sample is recorded
     r.t.push_back(t);
     for (std::size_t k = 0; k < records.size(); ++k) r.probes[k].value.push_back(records[k].sample(t));
