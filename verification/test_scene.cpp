@@ -97,6 +97,8 @@ class SceneTest : public ::testing::Test {
           {"model", "compaction"}, {"loading_curve", "curve.csv"}, {"unloading_modulus", 1e9}};
     if (selector == "specimen.model" && value == "dem")
       j["specimen"] = {{"model", "dem"}, {"grain_size_curve", "psd.csv"}};
+    if (selector == "specimen.contact_law")  // a DEM specimen with that grain law
+      j["specimen"] = {{"model", "dem"}, {"grain_size_curve", "psd.csv"}, {"contact_law", value}};
     if (selector == "specimen.model" && value == "fe")  // K_u >= the curve's steepest slope
       j["specimen"] = {{"model", "fe"}, {"loading_curve", "curve.csv"}, {"unloading_modulus", 2e9}};
     return j;
@@ -390,17 +392,6 @@ TEST_F(SceneTest, BarsFileFillsTheAnalysisStructs) {
   j["processing"] = {{"treshold_fraction", 0.1}};
   EXPECT_TRUE(contains(input_error([&] { parse_bars_file(j, "B"); }).rule(),
                        "did you mean 'threshold_fraction'"));
-}
-
-TEST(SceneHelpers, ClosestNameAndDefaultsListing) {
-  EXPECT_EQ(edit_distance("kitten", "sitting"), 3u);
-  const std::vector<std::string> keys = {"length", "diameter", "density", "youngs_modulus"};
-  EXPECT_EQ(closest_name("lenght", keys), "length");
-  EXPECT_EQ(closest_name("densty", keys), "density");
-  EXPECT_EQ(closest_name("young", keys), "youngs_modulus");
-  EXPECT_EQ(closest_name("colour", keys), "");
-  const std::string listing = format_defaults();
-  for (const ParamDoc& d : parameters()) EXPECT_TRUE(contains(listing, d.path + " ")) << d.path;
 }
 
 }  // namespace

@@ -41,26 +41,27 @@ HertzMindlinPair make_hertz_mindlin_pair(const Material& a, const Material& b,
   return pair;
 }
 
-void validate(const HertzMindlinParams& p) {
+void validate(const HertzMindlinParams& p, const std::string& path) {
   if (!(p.friction >= 0 && std::isfinite(p.friction)))
-    throw InputError("", "dem.contact.friction", "must be finite and >= 0");
+    throw InputError("", path + ".friction", "must be finite and >= 0");
   if (!(p.restitution > 0 && p.restitution <= 1))
-    throw InputError("", "dem.contact.restitution", "must be in (0, 1]");
+    throw InputError("", path + ".restitution", "must be in (0, 1]");
 }
 
 HertzMindlin::HertzMindlin(const std::vector<Material>& materials, const HertzMindlinParams& p)
     : params_(p), n_(static_cast<int>(materials.size())) {
-  validate(materials);
-  validate(p);
+  dem::validate(materials);  // qualified: the member validate(path) hides the free functions
+  dem::validate(p, "dem.contact_law");
   table_.reserve(materials.size() * materials.size());
   for (const auto& a : materials)
     for (const auto& b : materials) table_.push_back(make_hertz_mindlin_pair(a, b, p));
 }
 
 HertzMindlinWall::HertzMindlinWall(const std::vector<Material>& materials, const Material& wall,
-                                   const HertzMindlinParams& p) {
-  validate(materials);
-  validate(p);
+                                   const HertzMindlinParams& p)
+    : params_(p) {
+  dem::validate(materials);
+  dem::validate(p, "dem.walls.law");
   if (!(wall.youngs_modulus > 0) || !(wall.poisson_ratio > -1 && wall.poisson_ratio < 0.5))
     throw InputError("", "dem.walls.material", "E must be > 0 (+inf: rigid), nu in (-1, 0.5)");
   for (const auto& a : materials) table_.push_back(make_hertz_mindlin_pair(a, wall, p));

@@ -6,6 +6,7 @@
 // docs/dem.md relates the two. Also the closed forms of Hertz impact (Johnson 1985, Sec. 11.4)
 // and the Rayleigh time step (Li et al. 2005) the tests and the dt policy use. SI units.
 #pragma once
+#include <string>
 #include <vector>
 
 #include "dem/contact_pieces.hpp"
@@ -24,8 +25,9 @@ struct HertzMindlinParams {
   double restitution = 1.0;  ///< e in (0, 1]; 1 = undamped
 };
 
-/// Throws kolsky::InputError unless friction >= 0 and restitution in (0, 1].
-void validate(const HertzMindlinParams& p);
+/// Throws kolsky::InputError (path.friction, path.restitution) unless friction >= 0 and
+/// restitution in (0, 1].
+void validate(const HertzMindlinParams& p, const std::string& path = "dem.contact_law");
 
 /// The pieces of one material pair; force() evaluates one contact.
 struct HertzMindlinPair {
@@ -57,12 +59,20 @@ HertzMindlinPair make_hertz_mindlin_pair(const Material& a, const Material& b,
                                          const HertzMindlinParams& p);
 
 /// Grain-grain law: a table over material pairs, looked up by the particles' material indices.
+/// The law interface of contact_law.hpp: params(), pair(a, b).force(...), stable_dt, fits,
+/// validate.
 class HertzMindlin {
  public:
+  using Params = HertzMindlinParams;
   HertzMindlin(const std::vector<Material>& materials, const HertzMindlinParams& p);
   const HertzMindlinPair& pair(int a, int b) const { return table_[a * n_ + b]; }
   const HertzMindlinParams& params() const { return params_; }
   int n_materials() const { return n_; }
+  bool fits(int n_materials) const { return n_materials == n_; }
+  void validate(const std::string& path) const { dem::validate(params_, path); }
+  /// A Hertz contact stiffens with its overlap without bound, so no spring period limits
+  /// the step; the Rayleigh wave crossing the smallest grain does (Li et al. 2005).
+  double stable_dt(const LawLimits& l) const { return l.rayleigh_step; }
 
  private:
   HertzMindlinParams params_;
@@ -74,11 +84,18 @@ class HertzMindlin {
 /// wall's radius is infinite through the contact geometry, so R* = r for a plane).
 class HertzMindlinWall {
  public:
+  using Params = HertzMindlinParams;
   HertzMindlinWall(const std::vector<Material>& materials, const Material& wall,
                    const HertzMindlinParams& p);
   const HertzMindlinPair& pair(int particle_material) const { return table_[particle_material]; }
+  const HertzMindlinParams& params() const { return params_; }
+  bool fits(int n_materials) const { return n_materials == static_cast<int>(table_.size()); }
+  void validate(const std::string& path) const { dem::validate(params_, path); }
+  /// As HertzMindlin: the Rayleigh step of the smallest grain.
+  double stable_dt(const LawLimits& l) const { return l.rayleigh_step; }
 
  private:
+  HertzMindlinParams params_;
   std::vector<HertzMindlinPair> table_;
 };
 

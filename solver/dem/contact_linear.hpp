@@ -1,5 +1,5 @@
 // Linear contact laws, composed of the pieces of contact_pieces.hpp:
-//   LinearSpring ("linear_spring"): PFC-style constant k_n, k_s, friction (walls, Table 4.1).
+//   LinearSpring ("linear"): PFC-style constant k_n, k_s, friction (walls, Table 4.1).
 //   LsDynaLinear ("ls_dyna_linear"): LS-DYNA DES contact, Sec. 3.3, Eqs. 3.1-3.4:
 //     K_n = NORMK k_1 r_1 k_2 r_2 / (k_1 r_1 + k_2 r_2), k_i = E_i / (1 - 2 nu_i) as printed,
 //     K_s = SHEARK K_n, Coulomb FRIC, rolling moment FRICR R* F_n, NDAMP/TDAMP as fractions of
@@ -40,8 +40,21 @@ namespace kolsky::dem {
 /// particle of mass m (kg): sqrt(m/k) (sqrt(1 + zeta^2) - zeta).
 double linear_contact_time_step(double mass, double stiffness, double zeta);
 
+/// Parameters of a LinearSpring. The initialisers are the one linear contact the dissertation
+/// prints, the wall-specimen interface of Table 4.1 (k_n = 2.6e6 N/m, k_s = 1.6e6 N/m,
+/// ball-interface friction 0.3, no dashpot): every wall's default, and the scene's defaults
+/// for the walls and for the grain law "linear" (no grain-grain value is printed).
+struct LinearParams {
+  double normal_stiffness = 2.6e6;  ///< k_n, N/m
+  double shear_stiffness = 1.6e6;   ///< k_s, N/m
+  double friction = 0.3;            ///< Coulomb coefficient mu, -
+  double damping_ratio = 0;         ///< both dashpots, fraction of critical damping, -
+};
+
 /// PFC-style linear contact; the same parameters for every material pair (and every wall).
+/// The law interface of contact_law.hpp (pair(...).force, stable_dt, fits, validate).
 struct LinearSpring {
+  using Params = LinearParams;
   LinearNormal normal;
   LinearTangential tangential;
   CriticalDamping damping_normal, damping_tangential;
@@ -55,16 +68,27 @@ struct LinearSpring {
   }
   /// Smallest stable step over the normal and tangential springs for particle mass m (kg).
   double stable_dt(double mass) const;
+  /// The same for the lightest grain: the stiffest spring on the smallest mass.
+  double stable_dt(const LawLimits& l) const { return stable_dt(l.lightest_mass); }
+  bool fits(int) const { return true; }  // one parameter set for every material
+  void validate(const std::string& path) const;
 };
 
 /// A LinearSpring from k_n, k_s (N/m), friction and damping ratios (fractions of critical).
 LinearSpring linear_spring(double k_n, double k_s, double friction, double damping_normal = 0,
                            double damping_tangential = 0);
-/// Throws kolsky::InputError (path.<field>) unless k_n > 0, k_s >= 0, friction >= 0, damping
-/// ratios in [0, 1) and rolling coefficient >= 0.
+/// The LinearSpring of p, damping_ratio on both dashpots.
+LinearSpring linear_spring(const LinearParams& p);
+/// Throws kolsky::InputError (path.<field>) unless normal_stiffness > 0, shear_stiffness >= 0
+/// (both finite), friction >= 0 and damping_ratio in [0, 1).
+void validate(const LinearParams& p, const std::string& path);
+/// Throws kolsky::InputError (path.<field>: normal_stiffness, shear_stiffness, friction,
+/// damping_normal, damping_tangential, rolling_friction) unless k_n > 0, k_s >= 0,
+/// friction >= 0, damping ratios in [0, 1) and rolling coefficient >= 0.
 void validate(const LinearSpring& s, const std::string& path);
 
-/// Table 3.2 parameters of the LS-DYNA DES contact (defaults as printed there).
+/// Table 3.2 parameters of the LS-DYNA DES contact (defaults as printed there; TDAMP, which
+/// Table 3.2 lists without a source, as NDAMP).
 struct LsDynaParams {
   double normk = 0.07;  ///< NORMK, scale of the normal stiffness, -
   double sheark = 1.0;  ///< SHEARK = K_s / K_n, -
@@ -73,6 +97,10 @@ struct LsDynaParams {
   double ndamp = 0.1;   ///< normal damping, fraction of critical, -
   double tdamp = 0.1;   ///< tangential damping, fraction of critical, -
 };
+
+/// Throws kolsky::InputError (path.<field>) unless NORMK > 0, SHEARK, FRIC, FRICR >= 0 and
+/// NDAMP, TDAMP in [0, 1).
+void validate(const LsDynaParams& p, const std::string& path);
 
 /// One material pair of the LS-DYNA law: K_n depends on the two radii (Eq. 3.1).
 struct LsDynaPair {
@@ -92,17 +120,26 @@ struct LsDynaPair {
   }
 };
 
-/// Grain-grain LS-DYNA DES law over the material table.
+/// Grain-grain LS-DYNA DES law over the material table (the law interface of contact_law.hpp).
 class LsDynaLinear {
  public:
-  /// Throws kolsky::InputError on NORMK <= 0 or a negative coefficient, NDAMP/TDAMP >= 1.
+  using Params = LsDynaParams;
+  /// Throws kolsky::InputError ("dem.contact_law.<field>") for parameters validate() refuses.
   LsDynaLinear(const std::vector<Material>& materials, const LsDynaParams& p);
   const LsDynaPair& pair(int a, int b) const { return table_[a * n_ + b]; }
+  const LsDynaParams& params() const { return params_; }
   int n_materials() const { return n_; }
+  bool fits(int n_materials) const { return n_materials == n_; }
+  void validate(const std::string& path) const { dem::validate(params_, path); }
   /// Smallest stable step for particles of mass >= m_min (kg) and radius <= r_max (m).
   double stable_dt(double m_min, double r_max) const;
+  /// The same for the lightest grain and the largest radius (K_n grows with both radii).
+  double stable_dt(const LawLimits& l) const {
+    return stable_dt(l.lightest_mass, l.largest_radius);
+  }
 
  private:
+  LsDynaParams params_;
   int n_;
   std::vector<LsDynaPair> table_;
 };

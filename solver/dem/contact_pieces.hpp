@@ -25,6 +25,14 @@ struct ContactGeometry {
   double r_i = 0, r_j = 0;  ///< radii; r_j = +inf for a wall, m
 };
 
+/// What a law's stable-step rule needs to know about the grains (every law of both families
+/// has `double stable_dt(const LawLimits&) const`, contact_law.hpp; DemSystem fills it).
+struct LawLimits {
+  double lightest_mass = 0;   ///< smallest grain mass, kg
+  double largest_radius = 0;  ///< largest grain radius, m
+  double rayleigh_step = 0;   ///< smallest Rayleigh step of the grains, s (Li et al. 2005)
+};
+
 /// What one contact evaluation returns.
 struct ContactResult {
   Vec3 force;                 ///< total contact force on i, N

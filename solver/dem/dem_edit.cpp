@@ -170,7 +170,7 @@ void DemSystem::remap_contacts(const std::vector<int>& old_to_new, std::size_t n
   pairs_ = std::move(list);
 
   // Wall contacts: per wall slot, sorted by (new) particle.
-  const std::size_t n_slots = planes_.size() + tubes_.size();
+  const auto n_slots = static_cast<std::size_t>(WallSlots{n_planes(), n_cylinders()}.count());
   if (wall_first_.size() == n_slots + 1) {
     struct Wall {
       int particle;

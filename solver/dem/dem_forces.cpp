@@ -112,8 +112,9 @@ void DemSystem::plane_forces(const Law& law, int k, double dt) {
   const Vec3 nw = s.wall.normal;
   const Vec3 base = s.wall.point + s.offset * nw;
   const Vec3 v_wall = s.speed * nw;
-  const auto c0 = static_cast<std::ptrdiff_t>(wall_first_[k]);
-  const auto c1 = static_cast<std::ptrdiff_t>(wall_first_[k + 1]);
+  const int slot = WallSlots{n_planes(), n_cylinders()}.slot(WallKind::plane, k);
+  const auto c0 = static_cast<std::ptrdiff_t>(wall_first_[slot]);
+  const auto c1 = static_cast<std::ptrdiff_t>(wall_first_[slot + 1]);
   ContactStore& out = wall_out_;
 #pragma omp for schedule(dynamic, kWallChunk) nowait
   for (std::ptrdiff_t c = c0; c < c1; ++c) {
@@ -138,7 +139,7 @@ template <class Law>
 void DemSystem::tube_forces(const Law& law, int k, double dt) {
   const TubeState& t = tubes_[k];
   const double radius = t.wall.radius + t.u;
-  const int slot = static_cast<int>(planes_.size()) + k;
+  const int slot = WallSlots{n_planes(), n_cylinders()}.slot(WallKind::cylinder, k);
   const auto c0 = static_cast<std::ptrdiff_t>(wall_first_[slot]);
   const auto c1 = static_cast<std::ptrdiff_t>(wall_first_[slot + 1]);
   ContactStore& out = wall_out_;
@@ -232,17 +233,18 @@ void DemSystem::compute_forces(double dt) {
   }
   // Wall resultants in candidate order (deterministic), and the planes' work on the grains
   // by the trapezoid rule over the plane's displacement since the last evaluation.
-  for (std::size_t w = 0; w < planes_.size() + tubes_.size(); ++w) {
+  const WallSlots slots{n_planes(), n_cylinders()};  // the one slot rule (walls.hpp)
+  for (int w = 0; w < slots.count(); ++w) {
     double sum = 0;
     for (int c = wall_first_[w]; c < wall_first_[w + 1]; ++c)
       if (wall_out_.active[c]) sum += wall_normal_[c];
-    if (w < planes_.size()) {
-      PlaneState& s = planes_[w];
+    if (slots.kind(w) == WallKind::plane) {
+      PlaneState& s = planes_[slots.index(w)];
       s.work += 0.5 * (s.force + sum) * (s.offset - s.offset_at_force);
       s.offset_at_force = s.offset;
       s.force = sum;
     } else {
-      tubes_[w - planes_.size()].force = sum;
+      tubes_[slots.index(w)].force = sum;
     }
   }
   forces_valid_ = true;

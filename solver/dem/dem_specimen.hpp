@@ -15,13 +15,13 @@ namespace kolsky::dem {
 
 struct DemSpecimenState;  // dem_state.hpp: checkpoint/restart state
 
-/// Walls of the specimen. Defaults: the Table 4.1 linear wall contact (k_n = 2.6e6 N/m,
-/// k_s = 1.6e6 N/m, friction 0.3) on both ends and the tube; a rigid tube.
+/// Walls of the specimen. Defaults: the Table 4.1 linear wall contact (LinearParams{}:
+/// k_n = 2.6e6 N/m, k_s = 1.6e6 N/m, friction 0.3) on both ends and the tube; a rigid tube.
 struct SpecimenWalls {
   double length = 0.0093;   ///< L, initial distance between the end planes, m
   double radius = 0.00955;  ///< inner radius of the confining tube, m
-  WallLaw end_law = linear_spring(2.6e6, 1.6e6, 0.3);
-  WallLaw tube_law = linear_spring(2.6e6, 1.6e6, 0.3);
+  WallLaw end_law = linear_spring(LinearParams{});
+  WallLaw tube_law = linear_spring(LinearParams{});
   std::optional<TubeCompliance> tube_compliance;  ///< none: rigid tube
   /// Hold the grains until loaded (docs/dem.md, "Holding the specimen until the wave
   /// arrives"): while neither face has moved into the specimen by more than hold_threshold,

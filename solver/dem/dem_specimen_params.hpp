@@ -1,33 +1,46 @@
 // Everything needed to build a DEM specimen for the bars: the packing (grain-size curve,
 // upscaling already applied, porosity, cylinder, seed, grain material), the grain contact law
-// (Hertz-Mindlin, Sec. 4.3 / Table 4.1), the walls and the integrator options (rolling
-// retardation, Eqs. 4.12-4.14).
+// (one of the ContactLaw family: Hertz-Mindlin, Sec. 4.3 / Table 4.1, by default; linear;
+// LS-DYNA's linear DES law, Eqs. 3.1-3.4 / Table 3.2), the walls and the integrator options
+// (rolling retardation, Eqs. 4.12-4.14), and the caller's names of these inputs for errors.
 #pragma once
-#include "dem/contact_hertz_mindlin.hpp"
+#include <string>
+#include <vector>
+
+#include "core/errors.hpp"
+#include "dem/contact_law.hpp"
 #include "dem/dem_specimen.hpp"
 #include "dem/packing.hpp"
 #include "dem/packing_cache.hpp"
 
 namespace kolsky::dem {
 
+/// An input's name in the caller's terms. The physics names its inputs by its own paths
+/// ("dem.contact_law.normk", "dem.walls.plane.law.normal_stiffness", "dem.packing.curve");
+/// a caller that knows them by other names (the scene: "specimen.normk") lists the pairs, and
+/// make_dem_specimen rethrows an InputError whose path is `internal` or lies under it
+/// ("internal.x", "internal[3]") with the path `external`, the longest `internal` winning,
+/// file and rule kept. Paths that match nothing pass unchanged.
+struct InputName {
+  std::string internal, external;
+};
+
 struct DemSpecimenParams {
   PackingParams packing;          ///< curve (upscaled), porosity, diameter, length, seed, material
-  HertzMindlinParams contact;     ///< grain-grain friction and restitution
+  ContactLawParams contact;       ///< grain-grain law and its parameters (Hertz-Mindlin default)
   SpecimenWalls walls;            ///< end planes and tube (length/radius follow the packing)
   DemOptions options;             ///< rolling retardation, skin, dt safety
   std::string packing_cache;      ///< cache directory (packing_cache.hpp); "" = none
+  std::vector<InputName> input_names;  ///< for errors while building (empty: physics names)
 };
 
 /// Packs the grains (generate_packing, through the cache when p.packing_cache is set) and
-/// builds the specimen between the two end planes.
-inline DemSpecimen make_dem_specimen(const DemSpecimenParams& p) {
-  PackingResult packed = cached_packing(p.packing, p.packing_cache).result;
-  SpecimenWalls walls = p.walls;
-  walls.length = p.packing.length;
-  walls.radius = 0.5 * p.packing.diameter;
-  std::vector<Material> materials{p.packing.material};
-  return DemSpecimen(std::move(packed.particles), materials, HertzMindlin(materials, p.contact),
-                     walls, p.options);
-}
+/// builds the specimen between the two end planes with the law p.contact selects. An
+/// InputError thrown meanwhile is renamed through p.input_names (rename_input_error).
+DemSpecimen make_dem_specimen(const DemSpecimenParams& p);
+
+/// `e` with its path in the names of `names` (InputName's rule); `e` itself when none matches.
+kolsky::InputError rename_input_error(const kolsky::InputError& e,
+                                      const std::vector<InputName>& names);
 
 }  // namespace kolsky::dem

@@ -47,7 +47,7 @@ DemState DemSystem::save_state() const {
       s.pair_history.push_back(pairs_.history[k]);
     }
   }
-  const std::size_t n_slots = planes_.size() + tubes_.size();
+  const auto n_slots = static_cast<std::size_t>(WallSlots{n_planes(), n_cylinders()}.count());
   if (wall_first_.size() == n_slots + 1) {
     for (std::size_t w = 0; w < n_slots; ++w)
       for (int c = wall_first_[w]; c < wall_first_[w + 1]; ++c) {
@@ -86,7 +86,8 @@ void DemSystem::restore_state(const DemState& s) {
     if (!(i >= 0 && i < j && j < static_cast<int>(n) && ordered))
       bad_state("pair histories must be sorted pairs i < j of existing particles");
   }
-  const std::size_t n_slots = planes_.size() + tubes_.size(), n_wall = s.wall_slot.size();
+  const auto n_slots = static_cast<std::size_t>(WallSlots{n_planes(), n_cylinders()}.count());
+  const std::size_t n_wall = s.wall_slot.size();
   if (s.wall_particle.size() != n_wall || s.wall_history.size() != n_wall)
     bad_state("wall histories: slot, particle and history differ in length");
   for (std::size_t c = 0; c < n_wall; ++c) {

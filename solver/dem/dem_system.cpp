@@ -6,7 +6,6 @@
 #include <cmath>
 #include <limits>
 #include <sstream>
-#include <type_traits>
 
 #include "core/errors.hpp"
 #include "dem/contact_hertz_mindlin.hpp"
@@ -32,18 +31,15 @@ DemSystem::DemSystem(Particles particles, std::vector<Material> materials, Conta
   validate(materials_);
   validate(p_, materials_.size());
   if (p_.size() == 0) throw InputError("", "dem.particles", "at least one particle is needed");
+  // Every law answers the same two questions (contact_law.hpp, the law interface).
   const int n_mat = static_cast<int>(materials_.size());
-  const bool law_matches = std::visit(
+  std::visit(
       [n_mat](const auto& l) {
-        using L = std::decay_t<decltype(l)>;
-        if constexpr (std::is_same_v<L, HertzMindlin>) return l.n_materials() == n_mat;
-        else if constexpr (std::is_same_v<L, LsDynaLinear>) return l.n_materials() == n_mat;
-        else return true;
+        if (!l.fits(n_mat))
+          throw InputError("", "dem.contact_law", "built for a different number of materials");
+        l.validate("dem.contact_law");
       },
       law_);
-  if (!law_matches)
-    throw InputError("", "dem.contact_law", "built for a different number of materials");
-  if (const auto* s = std::get_if<LinearSpring>(&law_)) validate(*s, "dem.contact_law");
   if (!(opt_.skin_over_min_radius > 0))
     throw InputError("", "dem.skin_over_min_radius", "must be > 0");
   if (!(opt_.dt_safety > 0 && opt_.dt_safety <= 1))
@@ -126,22 +122,21 @@ double DemSystem::compute_stable_dt() const {
     r_max = std::max(r_max, p_.radius[i]);
     rayleigh = std::min(rayleigh, rayleigh_time_step(p_.radius[i], materials_[p_.material[i]]));
   }
-  bool hertz = std::holds_alternative<HertzMindlin>(law_);
-  double linear = std::visit(
-      [&](const auto& l) {
-        using L = std::decay_t<decltype(l)>;
-        if constexpr (std::is_same_v<L, LinearSpring>) return l.stable_dt(m_min);
-        else if constexpr (std::is_same_v<L, LsDynaLinear>) return l.stable_dt(m_min, r_max);
-        else return inf;
-      },
-      law_);
-  auto wall_limit = [&](const WallLaw& w) {
-    if (const auto* s = std::get_if<LinearSpring>(&w)) linear = std::min(linear, s->stable_dt(m_min));
-    else hertz = true;
+  // Every law, of the grains and of each wall, states its own limit through the same member,
+  // stable_dt(LawLimits) (contact_law.hpp): the Rayleigh step for a Hertz law (Li et al.
+  // 2005), sqrt(m/k)(sqrt(1 + zeta^2) - zeta) of its stiffest spring on the lightest grain for
+  // a linear one (Eqs. 3.1-3.2 for LS-DYNA's). `linear` gathers them all with the tube's ring
+  // mode, so no law type is named here; the Rayleigh step arrives through the Hertz laws' own
+  // limit, hence `hertz` = false in the policy line below (a minimum is exact: the same bits).
+  const LawLimits limits{m_min, r_max, rayleigh};
+  const auto limit_of = [&](const auto& family) {
+    return std::visit([&](const auto& law) { return law.stable_dt(limits); }, family);
   };
-  for (const auto& s : planes_) wall_limit(s.wall.law);
+  const bool hertz = false;
+  double linear = limit_of(law_);
+  for (const auto& s : planes_) linear = std::min(linear, limit_of(s.wall.law));
   for (const auto& t : tubes_) {
-    wall_limit(t.wall.law);
+    linear = std::min(linear, limit_of(t.wall.law));
     if (t.mass > 0) linear = std::min(linear, std::sqrt(t.mass / t.stiffness));
   }
   return opt_.dt_safety * std::min(hertz ? rayleigh : inf, linear);
@@ -295,21 +290,24 @@ void DemSystem::rebuild() {
 }
 
 void DemSystem::build_wall_candidates() {
-  const std::size_t n_slots = planes_.size() + tubes_.size();
+  const WallSlots slots{n_planes(), n_cylinders()};  // the one slot rule (walls.hpp)
+  const auto n_slots = static_cast<std::size_t>(slots.count());
   std::vector<int> particle, first(n_slots + 1, 0);
   std::vector<Vec3> history;
   const bool carry = wall_first_.size() == n_slots + 1;
   for (std::size_t w = 0; w < n_slots; ++w) {
     std::size_t a = carry ? wall_first_[w] : 0;
     const std::size_t a_end = carry ? wall_first_[w + 1] : 0;
+    const int slot = static_cast<int>(w), k = slots.index(slot);
+    const bool plane = slots.kind(slot) == WallKind::plane;
     for (std::size_t i = 0; i < p_.size(); ++i) {
       const Vec3& x = p_.x[i];
       double gap;
-      if (w < planes_.size()) {
-        const auto& s = planes_[w];
+      if (plane) {
+        const auto& s = planes_[k];
         gap = dot(x - s.wall.point - s.offset * s.wall.normal, s.wall.normal) - p_.radius[i];
       } else {
-        const auto& t = tubes_[w - planes_.size()];
+        const auto& t = tubes_[k];
         const double rho = std::hypot(x.x - t.wall.cx, x.y - t.wall.cy);
         gap = t.wall.radius + t.u - rho - p_.radius[i];
       }

@@ -46,7 +46,7 @@ void validate(const PlaneWall& w, const char* path) {
   if (std::abs(norm(w.normal) - 1) > 1e-12)
     throw InputError("", at + ".normal", "must be a unit vector");
   if (!is_finite(w.point)) throw InputError("", at + ".point", "must be finite");
-  if (const auto* s = std::get_if<LinearSpring>(&w.law)) validate(*s, at + ".law");
+  std::visit([&](const auto& law) { law.validate(at + ".law"); }, w.law);
   if (const auto* p = std::get_if<PrescribedPlane>(&w.motion)) {
     const auto& h = p->velocity;
     if (h.time.empty() || h.time.size() != h.speed.size())
@@ -60,7 +60,7 @@ void validate(const PlaneWall& w, const char* path) {
 void validate(const CylinderWall& w, const char* path) {
   const std::string at(path);
   if (!(w.radius > 0)) throw InputError("", at + ".radius", "must be > 0");
-  if (const auto* s = std::get_if<LinearSpring>(&w.law)) validate(*s, at + ".law");
+  std::visit([&](const auto& law) { law.validate(at + ".law"); }, w.law);
   if (w.compliance) {
     const auto& c = *w.compliance;
     if (!(c.youngs_modulus > 0) || !(c.thickness > 0) || !(c.density > 0) || !(c.height > 0))

@@ -3,7 +3,8 @@
 // face), and the inner surface of a cylinder parallel to z (the confining tube), rigid or
 // radially compliant as a thin elastic ring with one radial degree of freedom: hoop stiffness
 // K = 2 pi H E t / R (p = E t u / R^2) and mass rho 2 pi R t H (docs/dem.md says why one DOF
-// rather than a spring per contact). SI units.
+// rather than a spring per contact). Planes and cylinders are one family for the contact
+// lists: WallSlots is its one slot rule. SI units.
 #pragma once
 #include <optional>
 #include <variant>
@@ -38,7 +39,7 @@ struct PlaneWall {
   Vec3 point;
   Vec3 normal{0, 0, 1};
   PlaneMotion motion = FixedPlane{};
-  WallLaw law = linear_spring(2.6e6, 1.6e6, 0.3);  ///< Table 4.1 wall contact
+  WallLaw law = linear_spring(LinearParams{});  ///< Table 4.1 wall contact
 };
 
 /// Thin elastic confining tube (radial compliance of CylinderWall).
@@ -60,11 +61,28 @@ struct CylinderWall {
   double cx = 0, cy = 0;
   double radius = 0.00955;
   std::optional<TubeCompliance> compliance;
-  WallLaw law = linear_spring(2.6e6, 1.6e6, 0.3);  ///< Table 4.1 wall contact
+  WallLaw law = linear_spring(LinearParams{});  ///< Table 4.1 wall contact
+};
+
+enum class WallKind { plane, cylinder };
+
+/// The one slot rule of a DemSystem's walls: every wall-contact list, history, resultant and
+/// checkpoint entry is indexed by a wall slot, planes first (plane k at slot k), then
+/// cylinders (cylinder k at slot n_planes + k). Built from DemSystem::n_planes() and
+/// n_cylinders(); nothing else may spell the rule out.
+struct WallSlots {
+  int n_planes = 0, n_cylinders = 0;
+
+  int count() const { return n_planes + n_cylinders; }
+  /// The slot of wall k of the kind.
+  int slot(WallKind kind, int k) const { return kind == WallKind::plane ? k : n_planes + k; }
+  /// The kind and index (among its kind) of the wall in `slot`.
+  WallKind kind(int slot) const { return slot < n_planes ? WallKind::plane : WallKind::cylinder; }
+  int index(int slot) const { return slot < n_planes ? slot : slot - n_planes; }
 };
 
 /// Throws kolsky::InputError for a degenerate wall (zero normal, radius <= 0, bad history,
-/// invalid linear law).
+/// invalid law parameters: path.law.<field>).
 void validate(const PlaneWall& w, const char* path);
 void validate(const CylinderWall& w, const char* path);
 

@@ -280,8 +280,12 @@ void JsonReader::check_consumed(const json& object, const std::string& prefix) c
     if (read_.count(path)) continue;
     if (p->doc.applies_to.empty())
       throw std::logic_error("the " + schema_ + " parser did not read '" + path + "'");
-    fail(path, "'" + last_segment(path) + "' is used only when " +
-                   describe_applies_to(p->doc.applies_to));
+    // A selector that is itself a variant key (specimen.contact_law, DEM only) says so too.
+    std::string when = describe_applies_to(p->doc.applies_to);
+    const std::string selector = p->doc.applies_to.substr(0, p->doc.applies_to.find('='));
+    if (const ParamSpec* s = find_param(schema_, selector); s && !s->doc.applies_to.empty())
+      when += ", with " + describe_applies_to(s->doc.applies_to);
+    fail(path, "'" + last_segment(path) + "' is used only when " + when);
   }
 }
 

@@ -13,14 +13,11 @@
 #include "core/errors.hpp"
 #include "scene/csv_load.hpp"
 #include "scene/json_reader.hpp"
+#include "scene/scene_internal.hpp"
 
 namespace kolsky::scene {
 
-namespace {
-
 namespace fs = std::filesystem;
-
-std::string show(double v) { return format_number(v); }
 
 /// Relative CSV paths are relative to the scene file's folder, so a scene can be run from
 /// anywhere; the absolute path is what the resolved scene records.
@@ -33,6 +30,10 @@ std::string resolve_csv(JsonReader& r, const std::string& key, const std::string
   r.resolve(key, abs);
   return abs;
 }
+
+namespace {
+
+std::string show(double v) { return format_number(v); }
 
 void check_gauges(JsonReader& r, const std::string& prefix, const shpb::BarSpec& b,
                   shpb::BarKind kind) {
@@ -156,49 +157,6 @@ fe::FeSpecimenParams read_fe_specimen(JsonReader& r, const std::string& base_dir
   f.penalty_scale = r.number("specimen.penalty_scale");
   f.contact_damping = r.number("specimen.contact_damping");
   return f;
-}
-
-dem::DemSpecimenParams read_dem_specimen(JsonReader& r, const std::string& base_dir) {
-  dem::DemSpecimenParams d;
-  const std::string csv = resolve_csv(r, "specimen.grain_size_curve", base_dir);
-  const CsvColumns c = read_two_column_csv(csv, "diameter_m", "percent_passing");
-  psd::GrainSizeCurve curve{c.x, c.y};
-  try {
-    curve.validate();
-  } catch (const std::invalid_argument& e) {
-    throw InputError(csv, "", e.what());
-  }
-  d.packing.curve = psd::upscale(curve, r.number("specimen.upscale"));
-  d.packing.porosity = r.number("specimen.porosity");
-  d.packing.diameter = r.number("specimen.diameter");
-  d.packing.length = r.number("specimen.length");
-  d.packing.seed = static_cast<std::uint64_t>(r.integer("specimen.seed"));
-  d.packing.jam = r.text("specimen.packing") == "jammed";
-  if (std::string cache = r.text("specimen.packing_cache"); !cache.empty()) {
-    fs::path cp(cache);  // relative to the scene file's folder, like the CSV paths
-    if (cp.is_relative()) cp = fs::path(base_dir.empty() ? "." : base_dir) / cp;
-    d.packing_cache = fs::absolute(cp).lexically_normal().string();
-    r.resolve("specimen.packing_cache", d.packing_cache);
-  }
-  d.walls.hold_until_loaded = r.boolean("specimen.hold_until_loaded");
-  d.walls.preload_on_supports = r.boolean("specimen.preload_on_supports");
-  d.packing.initial_stress = r.number("specimen.initial_stress");
-  const double g = r.number("specimen.grain_shear_modulus");
-  const double nu = r.number("specimen.grain_poisson_ratio");
-  d.packing.material = dem::Material{2.0 * g * (1.0 + nu), nu, r.number("specimen.grain_density")};
-  d.contact.friction = r.number("specimen.grain_friction");
-  d.packing.prestress_friction = d.contact.friction;  // pre-stressed under the test's friction
-  d.contact.restitution = r.number("specimen.restitution");
-  d.options.rolling.factor_per_reference_step = r.number("specimen.rolling_factor");
-  const auto wall = dem::linear_spring(r.number("specimen.wall_normal_stiffness"),
-                                       r.number("specimen.wall_shear_stiffness"),
-                                       r.number("specimen.wall_friction"));
-  d.walls.end_law = wall;
-  d.walls.tube_law = wall;
-  // Pre-stressed against the test's wall springs (docs/dem.md, Pre-stress).
-  d.packing.prestress_wall_normal_stiffness = r.number("specimen.wall_normal_stiffness");
-  d.packing.prestress_wall_shear_stiffness = r.number("specimen.wall_shear_stiffness");
-  return d;
 }
 
 shpb::SpecimenSpec read_specimen(JsonReader& r, const std::string& base_dir) {

@@ -1,7 +1,8 @@
 // The one parameter table of scene files and BARS.json. Defaults are taken from the default
 // member initializers of the structs the parsers fill (so table and structs cannot drift apart)
 // except where a key is required or its default depends on another key. Ranges are the
-// validation rules; the parsers apply them by looking the key up here.
+// validation rules; the parsers apply them by looking the key up here. The DEM specimen's rows
+// (packing, grains, contact laws, walls) are in schema_dem.cpp, the builder in schema_builder.hpp.
 #include "scene/schema.hpp"
 
 #include <algorithm>
@@ -12,95 +13,17 @@
 #include "bar/material.hpp"
 #include "bar/pulse.hpp"
 #include "bar/specimen_column.hpp"
-#include "dem/dem_specimen_params.hpp"
 #include "fe/fe_specimen.hpp"
 #include "shpb/analysis.hpp"
 #include "shpb/experiment.hpp"
 #include "shpb/gauge_processing.hpp"
+#include "scene/schema_builder.hpp"
 
 namespace kolsky::scene {
 
 namespace {
 
-constexpr double kInf = std::numeric_limits<double>::infinity();
-const Range kNoRange{};
-const Range kPositive{0.0, kInf, true, false};
-const Range kNonNegative{0.0, kInf, false, false};
-const Range kPoisson{0.0, 0.5, true, true};
-const Range kOpenUnit{0.0, 1.0, true, true};
-const Range kHalfOpenUnitUpper{0.0, 1.0, true, false};  // (0, 1]
-const Range kHalfOpenUnitLower{0.0, 1.0, false, true};  // [0, 1)
-// Below 2 elements the column has no interior node; above 1e5 a 1-D column is only slow.
-const Range kElementCount{2.0, 100000.0, false, false};
-const Range kMeshCount{1.0, 1000.0, false, false};
-const Range kFrictionAngle{0.0, 90.0, false, true};  // [0, 90) degrees
-const Range kUnitClosed{0.0, 1.0, false, false};     // [0, 1]
-// Below 4 balls a chain is no longer a wave guide: incident and reflected waves overlap at
-// every ball, so there is nothing for a gauge to separate.
-const Range kSphereCount{4.0, kInf, false, false, true};
-
-std::string type_name(ValueType t) {
-  switch (t) {
-    case ValueType::number: return "number";
-    case ValueType::integer: return "integer";
-    case ValueType::boolean: return "boolean";
-    case ValueType::string: return "string";
-    case ValueType::choice: return "choice";
-    case ValueType::path: return "path";
-    case ValueType::number_list: return "number[]";
-  }
-  return "?";
-}
-
-std::string default_text(ValueType t, const nlohmann::json& v) {
-  switch (t) {
-    case ValueType::number: return format_number(v.get<double>());
-    case ValueType::boolean: return v.get<bool>() ? "true" : "false";
-    case ValueType::integer: return std::to_string(v.get<long long>());
-    case ValueType::choice: return v.get<std::string>();
-    default: return v.dump();
-  }
-}
-
-/// Collects rows for one schema; `def` null marks a required key.
-class TableBuilder {
- public:
-  TableBuilder(std::vector<ParamSpec>& rows, std::string schema)
-      : rows_(rows), schema_(std::move(schema)) {}
-
-  void add(ValueType type, const std::string& path, nlohmann::json def, const std::string& unit,
-           const Range& range, const std::string& description, const std::string& applies = "",
-           std::vector<std::string> choices = {}) {
-    ParamSpec p;
-    p.type = type;
-    p.required = def.is_null();
-    p.default_value = std::move(def);
-    p.range = range;
-    p.choices = std::move(choices);
-    p.doc = {schema_,
-             path,
-             type_name(type),
-             p.required ? "required" : default_text(type, p.default_value),
-             unit,
-             description,
-             applies};
-    rows_.push_back(std::move(p));
-  }
-  /// A key whose default is derived from other keys by the parser; `text` documents how.
-  void add_derived(ValueType type, const std::string& path, const std::string& text,
-                   const std::string& unit, const Range& range, const std::string& description) {
-    add(type, path, nullptr, unit, range, description);
-    rows_.back().required = false;
-    rows_.back().doc.default_value = text;
-  }
-
- private:
-  std::vector<ParamSpec>& rows_;
-  std::string schema_;
-};
-
-const nlohmann::json kRequired = nullptr;
-using VT = ValueType;
+using namespace table;
 
 void add_scene_bar(TableBuilder& t, const std::string& side) {
   const std::string p = "bars." + side + ".";
@@ -223,57 +146,7 @@ std::vector<ParamSpec> build_table() {
         "Contact penalty stiffness factor (docs/fe.md)", "specimen.model=fe");
   s.add(VT::number, "specimen.contact_damping", fep.contact_damping, "-", kNonNegative,
         "Normal contact damping, fraction of critical (docs/fe.md)", "specimen.model=fe");
-  const dem::PackingParams pack;
-  const dem::HertzMindlinParams hm;
-  const dem::Material grain;
-  s.add(VT::path, "specimen.grain_size_curve", kRequired, "path", kNoRange,
-        "CSV table diameter_m,percent_passing (by mass), before upscaling", "specimen.model=dem");
-  s.add(VT::number, "specimen.upscale", 1.0, "-", kPositive,
-        "Upscaling factor N: every grain size times N (Sec. 4.3, Ch. 5)", "specimen.model=dem");
-  s.add(VT::number, "specimen.porosity", pack.porosity, "-", kOpenUnit,
-        "Target porosity of the packing (Sec. 4.3: 0.44)", "specimen.model=dem");
-  s.add(VT::integer, "specimen.seed", static_cast<int>(pack.seed), "-", kNonNegative,
-        "Seed of the grain sampling and placement", "specimen.model=dem");
-  s.add(VT::choice, "specimen.packing", pack.jam ? "jammed" : "loose", "-", kNoRange,
-        "Packing procedure: loose (frictionless growth) or jammed (frictional contact network "
-        "at the target porosity; docs/dem.md, Packing)",
-        "specimen.model=dem", {"loose", "jammed"});
-  s.add(VT::string, "specimen.packing_cache", std::string(), "-", kNoRange,
-        "Folder (relative to the scene file) where packings are stored by a hash of all packing "
-        "parameters and reused; empty = no cache (docs/dem.md, Packing cache)",
-        "specimen.model=dem");
-  s.add(VT::boolean, "specimen.hold_until_loaded", dem::SpecimenWalls{}.hold_until_loaded, "-",
-        kNoRange,
-        "Hold the grains as packed (no DEM step) until a face moves into the specimen (docs/dem.md)",
-        "specimen.model=dem");
-  s.add(VT::number, "specimen.initial_stress", pack.initial_stress, "Pa", kNonNegative,
-        "Isotropic mean stress the packed grains are pre-stressed to before the test (0: none; "
-        "docs/dem.md, Pre-stress)",
-        "specimen.model=dem");
-  s.add(VT::boolean, "specimen.preload_on_supports", dem::SpecimenWalls{}.preload_on_supports,
-        "-", kNoRange,
-        "The bar supports hold the initial wall forces and the gauges are zeroed with them: the "
-        "bars carry only the change (docs/dem.md, Pre-stressed specimens)",
-        "specimen.model=dem");
-  s.add(VT::number, "specimen.grain_shear_modulus", grain.shear_modulus(), "Pa", kPositive,
-        "Grain shear modulus G (Table 4.1: 30 GPa)", "specimen.model=dem");
-  s.add(VT::number, "specimen.grain_poisson_ratio", grain.poisson_ratio, "-", kPoisson,
-        "Grain Poisson ratio (Table 4.1: 0.3)", "specimen.model=dem");
-  s.add(VT::number, "specimen.grain_density", grain.density, "kg/m^3", kPositive,
-        "Grain density (G_s = 2.65)", "specimen.model=dem");
-  s.add(VT::number, "specimen.grain_friction", hm.friction, "-", kNonNegative,
-        "Grain-grain Coulomb friction (Table 4.1: 0.5)", "specimen.model=dem");
-  s.add(VT::number, "specimen.restitution", hm.restitution, "-", kHalfOpenUnitUpper,
-        "Grain-grain restitution through viscous damping; 1 = undamped", "specimen.model=dem");
-  s.add(VT::number, "specimen.rolling_factor", 1.0, "-", kUnitClosed,
-        "Rolling retardation k per 1e-9 s step (Eqs. 4.12-4.14; Sec. 4.3: 0.99999975; 1 = none)",
-        "specimen.model=dem");
-  s.add(VT::number, "specimen.wall_normal_stiffness", 2.6e6, "N/m", kPositive,
-        "Linear wall contact k_n, ends and tube (Table 4.1)", "specimen.model=dem");
-  s.add(VT::number, "specimen.wall_shear_stiffness", 1.6e6, "N/m", kPositive,
-        "Linear wall contact k_s (Table 4.1)", "specimen.model=dem");
-  s.add(VT::number, "specimen.wall_friction", 0.3, "-", kNonNegative,
-        "Wall-grain Coulomb friction (Table 4.1: 0.3)", "specimen.model=dem");
+  add_dem_rows(s);
 
   const shpb::TimeSpec time;
   s.add(VT::number, "time.end", kRequired, "s", kPositive, "Simulated time");

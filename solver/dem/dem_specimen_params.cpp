@@ -1,0 +1,39 @@
+// make_dem_specimen and the renaming of its input errors (see dem_specimen_params.hpp).
+#include "dem/dem_specimen_params.hpp"
+
+#include "core/errors.hpp"
+
+namespace kolsky::dem {
+
+namespace {
+// `path` is `prefix` or lies under it: the prefix ends at a segment boundary.
+bool under(const std::string& path, const std::string& prefix) {
+  if (path.compare(0, prefix.size(), prefix) != 0) return false;
+  return path.size() == prefix.size() || path[prefix.size()] == '.' || path[prefix.size()] == '[';
+}
+}  // namespace
+
+InputError rename_input_error(const InputError& e, const std::vector<InputName>& names) {
+  const InputName* best = nullptr;
+  for (const InputName& n : names)
+    if (under(e.path(), n.internal) && (!best || n.internal.size() > best->internal.size()))
+      best = &n;
+  if (!best) return e;
+  return InputError(e.file(), best->external, e.rule());
+}
+
+DemSpecimen make_dem_specimen(const DemSpecimenParams& p) {
+  try {
+    PackingResult packed = cached_packing(p.packing, p.packing_cache).result;
+    SpecimenWalls walls = p.walls;
+    walls.length = p.packing.length;
+    walls.radius = 0.5 * p.packing.diameter;
+    std::vector<Material> materials{p.packing.material};
+    return DemSpecimen(std::move(packed.particles), materials,
+                       make_contact_law(materials, p.contact), walls, p.options);
+  } catch (const InputError& e) {
+    throw rename_input_error(e, p.input_names);
+  }
+}
+
+}  // namespace kolsky::dem

@@ -1,0 +1,83 @@
+// Scene keys of a DEM specimen -> dem::DemSpecimenParams: the packing, the grains, the grain
+// contact law the scene selects (specimen.contact_law) with its parameters, the walls, and the
+// names of all of them for the physics' errors (dem_keys.hpp).
+#include <cstdint>
+#include <filesystem>
+#include <stdexcept>
+
+#include "core/errors.hpp"
+#include "scene/csv_load.hpp"
+#include "scene/dem_keys.hpp"
+#include "scene/scene_internal.hpp"
+
+namespace kolsky::scene {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+template <class P>
+void read_keys(JsonReader& r, const std::vector<LawKey<P>>& keys, P& p) {
+  for (const LawKey<P>& k : keys) p.*k.field = r.number("specimen." + k.key);
+}
+
+}  // namespace
+
+dem::DemSpecimenParams read_dem_specimen(JsonReader& r, const std::string& base_dir) {
+  dem::DemSpecimenParams d;
+  const std::string csv = resolve_csv(r, "specimen.grain_size_curve", base_dir);
+  const CsvColumns c = read_two_column_csv(csv, "diameter_m", "percent_passing");
+  psd::GrainSizeCurve curve{c.x, c.y};
+  try {
+    curve.validate();
+  } catch (const std::invalid_argument& e) {
+    throw InputError(csv, "", e.what());
+  }
+  d.packing.curve = psd::upscale(curve, r.number("specimen.upscale"));
+  d.packing.porosity = r.number("specimen.porosity");
+  d.packing.diameter = r.number("specimen.diameter");
+  d.packing.length = r.number("specimen.length");
+  d.packing.seed = static_cast<std::uint64_t>(r.integer("specimen.seed"));
+  d.packing.jam = r.text("specimen.packing") == "jammed";
+  if (std::string cache = r.text("specimen.packing_cache"); !cache.empty()) {
+    fs::path cp(cache);  // relative to the scene file's folder, like the CSV paths
+    if (cp.is_relative()) cp = fs::path(base_dir.empty() ? "." : base_dir) / cp;
+    d.packing_cache = fs::absolute(cp).lexically_normal().string();
+    r.resolve("specimen.packing_cache", d.packing_cache);
+  }
+  d.walls.hold_until_loaded = r.boolean("specimen.hold_until_loaded");
+  d.walls.preload_on_supports = r.boolean("specimen.preload_on_supports");
+  d.packing.initial_stress = r.number("specimen.initial_stress");
+  const double g = r.number("specimen.grain_shear_modulus");
+  const double nu = r.number("specimen.grain_poisson_ratio");
+  d.packing.material = dem::Material{2.0 * g * (1.0 + nu), nu, r.number("specimen.grain_density")};
+
+  // The grain law: its name selects the parameter struct (defaults: its initialisers), whose
+  // keys are then read; another law's keys stay unread, so JsonReader::finish refuses them.
+  d.contact = dem::default_law_params(r.text("specimen.contact_law"));
+  std::visit([&](auto& p) { read_keys(r, law_keys(p), p); }, d.contact);
+  if (const auto* hm = std::get_if<dem::HertzMindlinParams>(&d.contact)) {
+    d.packing.prestress_friction = hm->friction;  // pre-stressed under the test's friction
+  } else if (d.packing.initial_stress > 0) {
+    // The servo of prestress.cpp drives a Hertz-Mindlin network (its gain is the Hertz
+    // estimate of the target overlap), and a packing pre-stressed under Hertz contacts is
+    // out of equilibrium under another law; docs/dem.md, Pre-stress.
+    r.fail("specimen.initial_stress",
+           "a pre-stress needs specimen.contact_law = hertz_mindlin (the pre-stress servo "
+           "drives Hertz-Mindlin contacts); set it to 0 for " +
+               std::string(dem::kContactLawNames[d.contact.index()]));
+  }
+  d.options.rolling.factor_per_reference_step = r.number("specimen.rolling_factor");
+
+  dem::LinearParams wall;  // Table 4.1 by default; the same spring on both ends and the tube
+  read_keys(r, wall_keys(), wall);
+  d.walls.end_law = dem::linear_spring(wall);
+  d.walls.tube_law = dem::linear_spring(wall);
+  // Pre-stressed against the test's wall springs (docs/dem.md, Pre-stress).
+  d.packing.prestress_wall_normal_stiffness = wall.normal_stiffness;
+  d.packing.prestress_wall_shear_stiffness = wall.shear_stiffness;
+  d.input_names = dem_input_names(d.contact);
+  return d;
+}
+
+}  // namespace kolsky::scene

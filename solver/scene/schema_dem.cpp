@@ -1,0 +1,86 @@
+// The DEM specimen's rows of the parameter table (specimen.model = dem): packing, grains, the
+// grain contact law and its parameters, rotational resistance, walls. Every default comes from
+// a struct initialiser in solver/dem/ (the laws' through dem_keys.cpp).
+#include <string>
+
+#include "dem/dem_specimen_params.hpp"
+#include "scene/dem_keys.hpp"
+#include "scene/schema_builder.hpp"
+
+namespace kolsky::scene::table {
+
+namespace {
+
+// A law's keys, each used only when `applies` selects it.
+template <class P>
+void add_keys(TableBuilder& s, const std::vector<LawKey<P>>& keys, const std::string& applies) {
+  const P defaults{};
+  for (const LawKey<P>& k : keys)
+    s.add(VT::number, "specimen." + k.key, defaults.*k.field, k.unit, k.range, k.description,
+          applies);
+}
+
+}  // namespace
+
+void add_dem_rows(TableBuilder& s) {
+  const dem::PackingParams pack;
+  const dem::Material grain;
+  const std::string dem = "specimen.model=dem";
+  s.add(VT::path, "specimen.grain_size_curve", kRequired, "path", kNoRange,
+        "CSV table diameter_m,percent_passing (by mass), before upscaling", dem);
+  s.add(VT::number, "specimen.upscale", 1.0, "-", kPositive,
+        "Upscaling factor N: every grain size times N (Sec. 4.3, Ch. 5)", dem);
+  s.add(VT::number, "specimen.porosity", pack.porosity, "-", kOpenUnit,
+        "Target porosity of the packing (Sec. 4.3: 0.44)", dem);
+  s.add(VT::integer, "specimen.seed", static_cast<int>(pack.seed), "-", kNonNegative,
+        "Seed of the grain sampling and placement", dem);
+  s.add(VT::choice, "specimen.packing", pack.jam ? "jammed" : "loose", "-", kNoRange,
+        "Packing procedure: loose (frictionless growth) or jammed (frictional contact network "
+        "at the target porosity; docs/dem.md, Packing)",
+        dem, {"loose", "jammed"});
+  s.add(VT::string, "specimen.packing_cache", std::string(), "-", kNoRange,
+        "Folder (relative to the scene file) where packings are stored by a hash of all packing "
+        "parameters and reused; empty = no cache (docs/dem.md, Packing cache)",
+        dem);
+  s.add(VT::boolean, "specimen.hold_until_loaded", dem::SpecimenWalls{}.hold_until_loaded, "-",
+        kNoRange,
+        "Hold the grains as packed (no DEM step) until a face moves into the specimen (docs/dem.md)",
+        dem);
+  s.add(VT::number, "specimen.initial_stress", pack.initial_stress, "Pa", kNonNegative,
+        "Isotropic mean stress the packed grains are pre-stressed to before the test (0: none; "
+        "hertz_mindlin grains only; docs/dem.md, Pre-stress)",
+        dem);
+  s.add(VT::boolean, "specimen.preload_on_supports", dem::SpecimenWalls{}.preload_on_supports,
+        "-", kNoRange,
+        "The bar supports hold the initial wall forces and the gauges are zeroed with them: the "
+        "bars carry only the change (docs/dem.md, Pre-stressed specimens)",
+        dem);
+  s.add(VT::number, "specimen.grain_shear_modulus", grain.shear_modulus(), "Pa", kPositive,
+        "Grain shear modulus G (Table 4.1: 30 GPa); E = 2 G (1 + nu)", dem);
+  s.add(VT::number, "specimen.grain_poisson_ratio", grain.poisson_ratio, "-", kPoisson,
+        "Grain Poisson ratio (Table 4.1: 0.3)", dem);
+  s.add(VT::number, "specimen.grain_density", grain.density, "kg/m^3", kPositive,
+        "Grain density (G_s = 2.65)", dem);
+
+  // The grain law: its name is the index of the default-constructed parameter variant, so the
+  // default law, like every default, is a struct initialiser (dem_specimen_params.hpp).
+  std::vector<std::string> laws(dem::kContactLawNames.begin(), dem::kContactLawNames.end());
+  s.add(VT::choice, "specimen.contact_law",
+        std::string(dem::kContactLawNames[dem::DemSpecimenParams{}.contact.index()]), "-",
+        kNoRange,
+        "Grain-grain contact law: hertz_mindlin (Sec. 4.3, Eqs. 4.10-4.11, Table 4.1), linear "
+        "(PFC-style springs) or ls_dyna_linear (LS-DYNA DES, Sec. 3.3, Eqs. 3.1-3.4, Table 3.2; "
+        "its grains there: E = 70 MPa, nu = 0.2)",
+        dem, laws);
+  for (const std::string& law : laws)  // each law's keys, in the order of the names
+    std::visit([&](const auto& p) { add_keys(s, law_keys(p), "specimen.contact_law=" + law); },
+               dem::default_law_params(law));
+
+  s.add(VT::number, "specimen.rolling_factor",
+        dem::RollingRetardation{}.factor_per_reference_step, "-", kUnitClosed,
+        "Rolling retardation k per 1e-9 s step (Eqs. 4.12-4.14; Sec. 4.3: 0.99999975; 1 = none)",
+        dem);
+  add_keys(s, wall_keys(), dem);
+}
+
+}  // namespace kolsky::scene::table
