@@ -13,29 +13,13 @@
 #include <iterator>
 #include <stdexcept>
 
-#ifndef GNUPLOT_EXECUTABLE
-#define GNUPLOT_EXECUTABLE ""
-#endif
-
 namespace kolsky::benchsum {
 namespace {
 
 namespace fs = std::filesystem;
 
-// Okabe-Ito (colour-blind safe), the harness's cycle.
-constexpr const char* kColours[] = {"#0072B2", "#D55E00", "#009E73", "#CC79A7",
-                                    "#E69F00", "#56B4E9", "#000000", "#F0E442"};
-
-/// gnuplot single-quoted string: '' for a quote, line breaks as spaces.
-std::string quote(const std::string& s) {
-  std::string out = "'";
-  for (char c : s) {
-    if (c == '\'') out += "''";
-    else if (c == '\n' || c == '\r') out += ' ';
-    else out += c;
-  }
-  return out + "'";
-}
+constexpr auto& kColours = harness::kPlotColours;  // the reports' colours and quoting
+std::string quote(const std::string& s) { return harness::gnuplot_quote(s); }
 
 std::string num(double v) {
   char buf[40];
@@ -66,7 +50,7 @@ bool drawable(const Series& s) {
 
 }  // namespace
 
-std::string default_gnuplot() { return GNUPLOT_EXECUTABLE; }
+std::string default_gnuplot() { return harness::default_gnuplot(); }
 
 std::string gnuplot_script(const Figure& f) {
   const std::string stem = stem_of(f.file);

@@ -12,13 +12,14 @@
 #include "summary/plot.hpp"
 
 namespace kolsky::benchsum {
-namespace {
 
 std::string fmt(const char* f, double v) {
   char buf[64];
   std::snprintf(buf, sizeof buf, f, v);
   return buf;
 }
+
+namespace {
 std::string mega(std::optional<double> v) { return v ? fmt("%.2f", *v / 1e6) : ""; }
 std::string ratio_text(const std::optional<Ratio>& r) {
   return r ? fmt("%.4g", r->ratio) + " (v" + std::to_string(r->version) + ")" : "no reference";

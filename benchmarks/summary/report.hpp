@@ -42,4 +42,7 @@ std::string format_check(const std::vector<CheckRow>& rows);
 /// each value, median, min, max, and the largest drop below the median.
 std::string format_spread(const std::vector<ResultFile>& runs);
 
+/// printf-formatted number (one format, one value), for tables.
+std::string fmt(const char* format, double v);
+
 }  // namespace kolsky::benchsum

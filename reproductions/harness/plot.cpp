@@ -26,20 +26,10 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// Colour-blind-safe cycle (Okabe-Ito), shared by bands, series and points in drawing order.
-constexpr const char* kColours[] = {"#0072B2", "#D55E00", "#009E73", "#CC79A7",
-                                    "#E69F00", "#56B4E9", "#000000", "#F0E442"};
+constexpr auto& kColours = kPlotColours;
 
 /// gnuplot single-quoted string: no escapes except '' for a quote; line breaks become spaces.
-std::string quote(std::string s) {
-  std::string out = "'";
-  for (char c : s) {
-    if (c == '\'') out += "''";
-    else if (c == '\n' || c == '\r') out += ' ';
-    else out += c;
-  }
-  return out + "'";
-}
+std::string quote(const std::string& s) { return gnuplot_quote(s); }
 
 void put(std::string& out, double v) {
   if (!std::isfinite(v)) {
@@ -136,6 +126,16 @@ std::string run_gnuplot(const std::string& gnuplot, const std::string& dir,
 }  // namespace
 
 std::string default_gnuplot() { return GNUPLOT_EXECUTABLE; }
+
+std::string gnuplot_quote(const std::string& s) {
+  std::string out = "'";
+  for (char c : s) {
+    if (c == '\'') out += "''";
+    else if (c == '\n' || c == '\r') out += ' ';
+    else out += c;
+  }
+  return out + "'";
+}
 
 PlotResult render_plot(const Plot& p, const std::string& out_dir, const std::string& gnuplot) {
   const std::string stem = file_stem(p);

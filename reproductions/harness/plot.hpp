@@ -41,6 +41,12 @@ struct PlotResult {
   std::string message;
 };
 
+/// Colour-blind-safe cycle (Okabe-Ito) of every figure, in drawing order.
+inline constexpr const char* kPlotColours[] = {"#0072B2", "#D55E00", "#009E73", "#CC79A7",
+                                               "#E69F00", "#56B4E9", "#000000", "#F0E442"};
+/// A gnuplot single-quoted string: '' for a quote, line breaks as spaces.
+std::string gnuplot_quote(const std::string& s);
+
 /// The gnuplot the build found (compile definition GNUPLOT_EXECUTABLE); "" when there is none.
 std::string default_gnuplot();
 
