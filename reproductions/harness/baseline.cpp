@@ -4,6 +4,7 @@
 
 #include "core/atomic_file.hpp"
 #include "core/errors.hpp"
+#include "core/hash.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -109,8 +110,6 @@ Json list_json(const std::vector<double>& v) {
   return a;
 }
 
-bool same_number(double a, double b) { return a == b || (std::isnan(a) && std::isnan(b)); }
-
 /// Largest |a_i - b_i|; NaN when one side is finite and the other not.
 double max_change(const std::vector<double>& a, const std::vector<double>& b) {
   double s = 0.0;
@@ -123,13 +122,9 @@ double max_change(const std::vector<double>& a, const std::vector<double>& b) {
   return s;
 }
 
-std::uint64_t fnv1a(const std::string& s) {
-  std::uint64_t h = 1469598103934665603ull;
-  for (unsigned char c : s) h = (h ^ c) * 1099511628211ull;
-  return h;
-}
-
 }  // namespace
+
+bool same_number(double a, double b) { return a == b || (std::isnan(a) && std::isnan(b)); }
 
 double GateTolerance::allowed(double baseline) const {
   return atol + rtol * (std::isfinite(baseline) ? std::fabs(baseline) : 0.0);
@@ -365,7 +360,7 @@ Baseline load_baseline(const std::string& path) {
 std::string baseline_digest(const Baseline& b) {
   char hex[17];
   std::snprintf(hex, sizeof hex, "%016llx",
-                static_cast<unsigned long long>(fnv1a(baseline_json(b)["values"].dump())));
+                static_cast<unsigned long long>(fnv1a_64(baseline_json(b)["values"].dump())));
   return hex;
 }
 

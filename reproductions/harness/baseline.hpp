@@ -30,6 +30,9 @@ void write_measurements(const std::string& out_dir, const std::string& set,
 /// Throws kolsky::InputError naming the file and JSON path of the first broken rule.
 MeasurementsFile read_measurements(const std::string& path);
 
+/// Equal, or both NaN (a non-finite value is stored as null and read back as NaN).
+bool same_number(double a, double b);
+
 /// A value may move by atol + rtol*|baseline| (curves: at every point, x and y separately).
 struct GateTolerance {
   double rtol = 0.0, atol = 0.0;

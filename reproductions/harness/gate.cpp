@@ -18,8 +18,6 @@ std::string g(double v, const char* f = "%.10g") {
   return b;
 }
 
-bool same_number(double a, double b) { return a == b || (std::isnan(a) && std::isnan(b)); }
-
 /// Sets difference/allowed/verdict for one number; returns the share of the allowance used.
 double judge(GateRow& r, double base, double now, const GateTolerance& tol) {
   r.allowed = tol.allowed(base);

@@ -26,37 +26,28 @@ namespace kolsky::dem {
 
 namespace {
 
-/// New particle arrays: survivors (old_to_new >= 0) at their new index, then `added`.
-Particles compacted(const Particles& p, const std::vector<int>& old_to_new, std::size_t n_kept,
-                    const Particles& added) {
-  Particles out;
-  out.reserve(n_kept + added.size());
-  std::vector<int> order(n_kept);
-  for (std::size_t i = 0; i < old_to_new.size(); ++i)
-    if (old_to_new[i] >= 0) order[static_cast<std::size_t>(old_to_new[i])] = static_cast<int>(i);
-  for (int i : order) {
-    out.x.push_back(p.x[i]);
-    out.v.push_back(p.v[i]);
-    out.omega.push_back(p.omega[i]);
-    out.f.push_back(p.f[i]);
-    out.torque.push_back(p.torque[i]);
-    out.radius.push_back(p.radius[i]);
-    out.mass.push_back(p.mass[i]);
-    out.inertia.push_back(p.inertia[i]);
-    out.material.push_back(p.material[i]);
-  }
-  for (std::size_t k = 0; k < added.size(); ++k) {
-    out.x.push_back(added.x[k]);
-    out.v.push_back(added.v[k]);
-    out.omega.push_back(added.omega[k]);
-    out.f.push_back({});  // no contact has acted on it yet
-    out.torque.push_back({});
-    out.radius.push_back(added.radius[k]);
-    out.mass.push_back(added.mass[k]);
-    out.inertia.push_back(added.inertia[k]);
-    out.material.push_back(added.material[k]);
-  }
+/// v reordered: entry k is v[order[k]] (order may leave entries out).
+template <class T>
+std::vector<T> gathered(const std::vector<T>& v, const std::vector<int>& order) {
+  std::vector<T> out(order.size());
+  for (std::size_t k = 0; k < order.size(); ++k) out[k] = v[static_cast<std::size_t>(order[k])];
   return out;
+}
+
+/// The survivors in `order` (Particles::permute keeps only those), then `added` with no force.
+Particles compacted(Particles p, const std::vector<int>& order, const Particles& added) {
+  p.permute(order);
+  const auto append = [](auto& to, const auto& from) { to.insert(to.end(), from.begin(), from.end()); };
+  append(p.x, added.x);
+  append(p.v, added.v);
+  append(p.omega, added.omega);
+  p.f.resize(p.x.size());  // no contact has acted on them yet
+  p.torque.resize(p.x.size());
+  append(p.radius, added.radius);
+  append(p.mass, added.mass);
+  append(p.inertia, added.inertia);
+  append(p.material, added.material);
+  return p;
 }
 
 }  // namespace
@@ -89,12 +80,14 @@ EditMap DemSystem::edit(const ParticleEdit& e) {
   for (std::size_t c = 0; c < wall_particle_.size() && !contacts_change; ++c)
     contacts_change = wall_out_.active[c] && old_to_new[wall_particle_[c]] < 0;
 
-  for (std::size_t i = 0; i < n; ++i)
-    if (old_to_new[i] < 0) removed_dissipated_ += dissipated_[i];
-  std::vector<double> diss(n_new, 0.0);
-  for (std::size_t i = 0; i < n; ++i)
-    if (old_to_new[i] >= 0) diss[static_cast<std::size_t>(old_to_new[i])] = dissipated_[i];
-  dissipated_.swap(diss);
+  std::vector<int> survivors;  // new index k <- old survivors[k]
+  survivors.reserve(n_kept);
+  for (std::size_t i = 0; i < n; ++i) {
+    if (old_to_new[i] >= 0) survivors.push_back(static_cast<int>(i));
+    else removed_dissipated_ += dissipated_[i];
+  }
+  dissipated_ = gathered(dissipated_, survivors);
+  dissipated_.resize(n_new, 0.0);
 
   // Owner blocks: survivors stay in theirs (emptied blocks vanish), added grains in new ones.
   std::vector<int> blocks{0};
@@ -107,7 +100,7 @@ EditMap DemSystem::edit(const ParticleEdit& e) {
     blocks.push_back(static_cast<int>(n_kept + std::min(e.added.size(), a + opt_.owner_block)));
   block_first_.swap(blocks);
 
-  p_ = compacted(p_, old_to_new, n_kept, e.added);
+  p_ = compacted(std::move(p_), survivors, e.added);
   remap_contacts(old_to_new, n_new);
   skin_ = opt_.skin_over_min_radius * *std::min_element(p_.radius.begin(), p_.radius.end());
   stable_dt_ = compute_stable_dt();
@@ -239,9 +232,7 @@ std::vector<int> DemSystem::resort_for_locality() {
   std::vector<int> old_to_new(order.size());
   for (std::size_t k = 0; k < order.size(); ++k) old_to_new[static_cast<std::size_t>(order[k])] = static_cast<int>(k);
   p_.permute(order);
-  std::vector<double> diss(dissipated_.size());
-  for (std::size_t k = 0; k < order.size(); ++k) diss[k] = dissipated_[static_cast<std::size_t>(order[k])];
-  dissipated_.swap(diss);
+  dissipated_ = gathered(dissipated_, order);
   remap_contacts(old_to_new, p_.size());
   reset_owner_blocks();
   added_since_sort_ = 0;
