@@ -9,6 +9,7 @@
 //     D0 is the unperturbed run, D1... the --perturb-ulp reruns (scripts/rebaseline.sh makes
 //     them); writes the baseline and appends the log entry.
 #include "core/atomic_file.hpp"
+#include "core/build_info.hpp"
 #include "core/errors.hpp"
 #include "harness/baseline.hpp"
 #include "harness/gate.hpp"
@@ -170,7 +171,7 @@ int rebaseline(const Args& a) {
                      "is '" + base.set + "' at '" + base.scale + "', expected '" + a.set + "' at '" + a.scale + "'");
   std::vector<MeasurementsFile> perturbed;
   for (size_t i = 1; i < a.runs.size(); ++i) perturbed.push_back(read_measurements(a.runs[i] + "/measurements.json"));
-  const std::string build = std::string(KOLSKY_BUILD_TYPE) + ", GCC " + __VERSION__;
+  const std::string build = std::string(kolsky::build_info::build_type()) + ", GCC " + __VERSION__;
   Baseline b = make_baseline(base, perturbed, RebaselineRule{}, build, utc_now());
   if (!a.commit.empty()) b.git_commit = a.commit;
 

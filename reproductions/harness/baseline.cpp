@@ -5,6 +5,7 @@
 #include "core/atomic_file.hpp"
 #include "core/errors.hpp"
 #include "core/hash.hpp"
+#include "core/build_info.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -142,7 +143,7 @@ std::string baseline_path(const std::string& repo_root, const std::string& set,
 }
 
 Json measurements_json(const std::string& set, const std::string& scale, const Measurements& m) {
-  Json j{{"set", set}, {"scale", scale}, {"git_commit", KOLSKY_GIT_SHA}, {"values", Json::array()}};
+  Json j{{"set", set}, {"scale", scale}, {"git_commit", build_info::git_commit()}, {"values", Json::array()}};
   for (const auto& [id, v] : m.all()) {
     Json e{{"id", id}, {"kind", to_string(v.kind)}};
     switch (v.kind) {

@@ -7,16 +7,13 @@
 #include "harness/gate.hpp"
 
 #include "core/atomic_file.hpp"
+#include "core/build_info.hpp"
 #include "core/errors.hpp"
 
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <set>
-
-#ifndef KOLSKY_GIT_SHA
-#define KOLSKY_GIT_SHA "unknown"
-#endif
 
 namespace kolsky::harness {
 namespace {
@@ -71,7 +68,7 @@ Json results_json(const ReportInput& in, const std::vector<Score>& scores) {
   Json r;
   r["set"] = in.set;
   r["scale"] = in.scale;
-  r["git_commit"] = KOLSKY_GIT_SHA;
+  r["git_commit"] = build_info::git_commit();
   r["wall_time_s"] = number(in.wall_time_s);
   r["targets"] = Json::array();
   for (const Score& s : scores) {
@@ -156,7 +153,7 @@ std::string report_markdown(const ReportInput& in, const std::vector<Score>& sco
   }
   std::string md = "# Reproduction report: " + in.set + "\n\n";
   if (!in.preamble_markdown.empty()) md += in.preamble_markdown + "\n\n";
-  md += "- Scale: " + in.scale + "\n- Commit: `" + std::string(KOLSKY_GIT_SHA) + "`\n";
+  md += "- Scale: " + in.scale + "\n- Commit: `" + std::string(build_info::git_commit()) + "`\n";
   md += "- Wall time: " + fmt(in.wall_time_s) + " s\n- Targets: `" + in.targets_path + "`\n";
   md += "- Result: " +
         std::string(n_fail == 0 ? "<span style=\"color:green\">**PASS**</span>"

@@ -13,6 +13,7 @@
 #include "core/atomic_file.hpp"
 #include "harness/baseline.hpp"
 #include "harness/gate.hpp"
+#include "core/build_info.hpp"
 
 using namespace kolsky;
 
@@ -36,9 +37,9 @@ int main(int argc, char** argv) {
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
   nlohmann::json results{{"set", "verification"}, {"scale", args.scale},
-                         {"git_commit", KOLSKY_GIT_SHA}, {"wall_time_s", wall},
+                         {"git_commit", build_info::git_commit()}, {"wall_time_s", wall},
                          {"targets", nlohmann::json::array()}};
-  std::string md = "# Verification checks\n\nCommit `" + std::string(KOLSKY_GIT_SHA) +
+  std::string md = "# Verification checks\n\nCommit `" + std::string(build_info::git_commit()) +
                    "`, wall time " + num(wall) + " s. Each check compares the code with a closed "
                    "form; the tolerance column says why it is what it is. Errors are relative "
                    "unless the check says absolute.\n\n"

@@ -22,6 +22,7 @@
 #include "io/snapshots.hpp"
 #include "scene/scene.hpp"
 #include "shpb/simulation.hpp"
+#include "core/build_info.hpp"
 
 namespace kolsky::app {
 
@@ -33,9 +34,9 @@ io::RunRecord to_record(const scene::Scene& sc, const shpb::RunResult& r,
   io::RunRecord rec;
   rec.meta["scene"] = sc.resolved;
   rec.meta["scene_file"] = sc.file;
-  rec.meta["git_commit"] = KOLSKY_GIT_SHA;
-  rec.meta["build_type"] = KOLSKY_BUILD_TYPE;
-  rec.meta["kolsky_version"] = KOLSKY_VERSION;
+  rec.meta["git_commit"] = build_info::git_commit();
+  rec.meta["build_type"] = build_info::build_type();
+  rec.meta["kolsky_version"] = build_info::version();
   rec.meta["complete"] = r.complete;
   rec.meta["failure"] = r.failure;
   rec.meta["dt_s"] = r.dt;
@@ -138,7 +139,7 @@ int cmd_run(const std::vector<std::string>& args) {
       : (std::filesystem::path(out).parent_path() / std::filesystem::path(out).stem()).string() +
             ".ckpt.h5";
   nlohmann::json ck_meta = {{"scene", sc.resolved}, {"scene_file", sc.file},
-                            {"git_commit", KOLSKY_GIT_SHA}, {"kolsky_version", KOLSKY_VERSION}};
+                            {"git_commit", build_info::git_commit()}, {"kolsky_version", build_info::version()}};
   if (o.checkpoint_every > 0) {
     if (!sim->can_checkpoint())
       throw InputError(file, "specimen.model",

@@ -9,6 +9,7 @@
 
 #include "app/commands.hpp"
 #include "core/errors.hpp"
+#include "core/build_info.hpp"
 
 namespace {
 
@@ -47,7 +48,7 @@ int main(int argc, char** argv) {
     return args.empty() ? 1 : 0;
   }
   if (args[0] == "--version") {
-    std::printf("kolsky %s (%s, %s)\n", KOLSKY_VERSION, KOLSKY_GIT_SHA, KOLSKY_BUILD_TYPE);
+    std::printf("kolsky %s (%s, %s)\n", kolsky::build_info::version(), kolsky::build_info::git_commit(), kolsky::build_info::build_type());
     return 0;
   }
   const std::string cmd = args[0];

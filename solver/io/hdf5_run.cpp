@@ -6,6 +6,7 @@
 
 #include "core/atomic_file.hpp"
 #include "io/h5_util.hpp"
+#include "core/build_info.hpp"
 
 #include <hdf5.h>
 
@@ -14,15 +15,6 @@
 #include <stdexcept>
 #include <utility>
 
-#ifndef KOLSKY_GIT_SHA
-#define KOLSKY_GIT_SHA "unknown"
-#endif
-#ifndef KOLSKY_BUILD_TYPE
-#define KOLSKY_BUILD_TYPE "unknown"
-#endif
-#ifndef KOLSKY_VERSION
-#define KOLSKY_VERSION "unknown"
-#endif
 
 namespace kolsky::io {
 namespace {
@@ -80,10 +72,10 @@ void write_meta(hid_t file, const nlohmann::json& meta) {
                "create /meta");
   const auto scene = meta.find("scene");
   write_string_attr(group.get(), "scene", scene == meta.end() ? "null" : scene->dump());
-  write_string_attr(group.get(), "git_commit", meta_text(meta, "git_commit", KOLSKY_GIT_SHA));
-  write_string_attr(group.get(), "build_type", meta_text(meta, "build_type", KOLSKY_BUILD_TYPE));
+  write_string_attr(group.get(), "git_commit", meta_text(meta, "git_commit", build_info::git_commit()));
+  write_string_attr(group.get(), "build_type", meta_text(meta, "build_type", build_info::build_type()));
   write_string_attr(group.get(), "kolsky_version",
-                    meta_text(meta, "kolsky_version", KOLSKY_VERSION));
+                    meta_text(meta, "kolsky_version", build_info::version()));
   write_string_attr(group.get(), "failure", meta_text(meta, "failure", ""));
   write_int_attr(group.get(), "complete", meta_complete(meta));
   write_string_attr(group.get(), "meta_json", meta.dump());
