@@ -114,7 +114,7 @@ TEST(TestDemEdit, EditAwayFromContactsLeavesTheFollowingStepsBitwise) {
     omp_set_num_threads(threads);
     // Both carry the spectators; only `edited` swaps them (3 out, 2 others in) mid-run.
     DemSystem plain = scene(true), edited = scene(true);
-    const double dt = 0.5 * plain.stable_dt();
+    const double dt = 0.5 * (kDemStepFraction * plain.stable_dt());
     const std::vector<int> at = lattice_in_spectator_scene(plain.particles().size() - kInsertAfter.size());
     for (int k = 0; k < kBefore; ++k) {
       plain.step(dt);
@@ -141,7 +141,7 @@ TEST(TestDemEdit, NegativeControlDroppingHistoriesDiffers) {
   // The same removal of the spectators by rewriting the arrays (mutable_particles): the count
   // changes, so the histories and the owner blocks start afresh.
   DemSystem plain = scene(true), dropped = scene(true);
-  const double dt = 0.5 * plain.stable_dt();
+  const double dt = 0.5 * (kDemStepFraction * plain.stable_dt());
   const std::vector<int> at = lattice_in_spectator_scene(plain.particles().size() - kInsertAfter.size());
   for (int k = 0; k < kBefore; ++k) {
     plain.step(dt);
@@ -174,7 +174,7 @@ double ledger(const DemEnergy& e) { return e.kinetic + e.elastic + e.dissipated 
 
 TEST(TestDemEdit, RemovingLoadedGrainsKeepsOtherHistoriesAndClosesTheLedger) {
   DemSystem sys = scene(false);
-  const double dt = 0.5 * sys.stable_dt();
+  const double dt = 0.5 * (kDemStepFraction * sys.stable_dt());
   for (int k = 0; k < kBefore; ++k) sys.step(dt);
   const DemState before = sys.save_state();
   const DemEnergy e0 = sys.energy();
@@ -210,7 +210,7 @@ TEST(TestDemEdit, RemovingLoadedGrainsKeepsOtherHistoriesAndClosesTheLedger) {
 TEST(TestDemEdit, EditedSystemRestartsBitwiseAndThreadsAgree) {
   omp_set_num_threads(2);
   DemSystem whole = scene(false);
-  const double dt = 0.5 * whole.stable_dt();
+  const double dt = 0.5 * (kDemStepFraction * whole.stable_dt());
   for (int k = 0; k < kBefore; ++k) whole.step(dt);
   whole.edit(remove_loaded(whole));
   for (int k = 0; k < 50; ++k) whole.step(dt);
@@ -236,7 +236,7 @@ TEST(TestDemEdit, EditedSystemRestartsBitwiseAndThreadsAgree) {
 
 TEST(TestDemEdit, LocalityResortKeepsEveryGrainAndContact) {
   DemSystem sys = scene(false, 0.001);  // 0.1 %: three added grains already re-sort
-  const double dt = 0.5 * sys.stable_dt();
+  const double dt = 0.5 * (kDemStepFraction * sys.stable_dt());
   for (int k = 0; k < kBefore; ++k) sys.step(dt);
   const Particles old = sys.particles();
   const std::size_t contacts = sys.n_contacts();
@@ -264,7 +264,7 @@ TEST(TestDemEdit, BadEditsAreRefused) {
   }
   e.removed = {-1};
   EXPECT_THROW(sys.edit(e), InputError);
-  sys.begin_step(0.5 * sys.stable_dt());
+  sys.begin_step(0.5 * (kDemStepFraction * sys.stable_dt()));
   e.removed = {1};
   EXPECT_THROW(sys.edit(e), std::logic_error);
 }

@@ -57,7 +57,7 @@ std::vector<FaceForces> drive(DemSpecimen& s, double dt, int idle, int ramp,
 
 TEST(DemHold, FrozenBeforeLoadingAndShiftedRunAfter) {
   DemSpecimen held = specimen(true), fresh = specimen(false), stepped = specimen(false);
-  const double dt = 0.5 * held.stable_dt();
+  const double dt = 0.5 * (kDemStepFraction * held.stable_dt());
   const int idle = 400, ramp = 3000;
   std::vector<FaceForces> before;
   const auto a = drive(held, dt, idle, ramp, &before);
@@ -106,7 +106,7 @@ TEST(DemHold, CheckpointWhileHeldContinuesBitwise) {
   // Faces drift out (the residual force pushing the bars back), then come in: a state saved
   // while held and restored into a fresh specimen continues as the uninterrupted one.
   DemSpecimen a = specimen(true), b = specimen(true);
-  const double dt = 0.5 * a.stable_dt();
+  const double dt = 0.5 * (kDemStepFraction * a.stable_dt());
   auto faces_at = [&](int k) {
     FaceState f;
     f.intrusion_front = (k < 100 ? -1e-9 * k : -1e-7 + 2.0 * dt * (k - 100));

@@ -177,7 +177,7 @@ TEST(DemPrestress, PreloadOnSupportsHandsTheBarsTheChangeOnly) {
   const double area = std::numbers::pi * 0.25 * stressed_params().diameter * stressed_params().diameter;
   EXPECT_NEAR(f0.front / area / stressed_params().initial_stress, 1.0, 0.3);
   EXPECT_NEAR(f0.back / area / stressed_params().initial_stress, 1.0, 0.3);
-  const double dt = 0.5 * plain.stable_dt();
+  const double dt = 0.5 * (kDemStepFraction * plain.stable_dt());
   FaceState faces;
   for (int k = 0; k < 2000; ++k) {
     if (k >= 200) faces.intrusion_front += 2.0 * dt, faces.rate_front = 2.0;

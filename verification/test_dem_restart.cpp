@@ -54,7 +54,7 @@ void expect_identical(const DemSystem& a, const DemSystem& b) {
 TEST(TestDemRestart, SystemContinuesBitwiseAfterRestore) {
   constexpr int kHalf = 300;
   DemSystem whole = busy_system();
-  const double dt = 0.5 * whole.stable_dt();
+  const double dt = 0.5 * (kDemStepFraction * whole.stable_dt());
   for (int k = 0; k < 2 * kHalf; ++k) whole.step(dt);
 
   DemSystem first = busy_system();
@@ -91,7 +91,7 @@ TEST(TestDemRestart, SpecimenContinuesBitwiseFromMidStep) {
     return DemSpecimen(p, kSand, HertzMindlin(kSand, {0.5, 0.5}), w, options());
   };
   DemSpecimen whole = make(), first = make();
-  const double dt = 0.5 * whole.stable_dt(), rate = 5.0;
+  const double dt = 0.5 * (kDemStepFraction * whole.stable_dt()), rate = 5.0;
   // forces(t^n) then advance(dt): the bars' order; the state is saved after advance().
   auto drive = [&](DemSpecimen& s, int from, int to) {
     for (int k = from; k < to; ++k) {

@@ -50,7 +50,7 @@ TEST(TestDemSpecimen, FollowsTheFacesAndReportsWallForces) {
   EXPECT_EQ(s.face_mass(), 0.0);
   EXPECT_EQ(s.stable_dt(), s.system().stable_dt());
 
-  const double dt = 0.5 * s.stable_dt(), rate = 1.0;  // face speed, m/s (~270/s)
+  const double dt = 0.5 * (kDemStepFraction * s.stable_dt()), rate = 1.0;  // face speed, m/s (~270/s)
   FaceState faces;
   FaceForces f = s.forces(faces);
   const double e0 = s.energy().total();

@@ -147,7 +147,8 @@ TEST(SceneDocs, DocsAndParameterTableAgree) {
 }
 
 TEST_F(SceneTest, EveryParameterIsAccepted) {
-  // Values for keys without a literal default: required keys and the derived gauge default.
+  // Values for keys without a literal default: required keys and the derived defaults (gauges,
+  // the safety factor that depends on the specimen model).
   const std::map<std::string, json> example = {{"bars.incident.length", 1.0},
                                                {"bars.transmission.length", 1.0},
                                                {"bars.incident.gauges", {0.25, 0.5}},
@@ -162,12 +163,13 @@ TEST_F(SceneTest, EveryParameterIsAccepted) {
                                                {"specimen.grain_size_curve", "psd.csv"},
                                                {"specimen.unloading_modulus", 2e9},
                                                {"time.end", 1e-3},
+                                               {"time.safety_factor", 0.5},
                                                {"incident.gauge_distance", 0.5},
                                                {"transmission.gauge_distance", 0.5},
                                                {"specimen.length", 0.0093}};
   for (const ParamDoc& d : parameters()) {
     json value;
-    if (d.default_value == "required" || d.default_value.front() == '[')
+    if (d.default_value == "required" || d.default_value.front() == '[' || example.count(d.path))
       value = example.at(d.path);
     else if (d.type == "choice")
       value = d.default_value;

@@ -84,7 +84,8 @@ struct TwoGrains {
     p.add({0, 0, 2 * r - delta}, r, 0, materials);
   }
   double mass() const { return p.mass[0]; }
-  /// Normal force on grain 0 (compression +) and the system's stable dt.
+  /// Normal force on grain 0 (compression +) and the system's stable dt (the raw limit: no
+  /// safety factor inside, the stepping loop applies it).
   std::pair<double, double> force_and_dt(const ContactLaw& law) const {
     DemSystem sys(p, materials, law);
     sys.compute_forces();
@@ -108,6 +109,25 @@ TEST_F(SceneLaws, WithoutTheKeyTheLawIsHertzMindlinAsBefore) {
   EXPECT_EQ(name_of(make_contact_law({Material{}}, DemSpecimenParams{}.contact)), "hertz_mindlin");
 }
 
+TEST_F(SceneLaws, DemSpecimenDefaultsToTheFractionItsRunsAlwaysUsed) {
+  // The raw limit has no safety factor in it, so the scene's one factor defaults to 0.5 x 0.3
+  // for a DEM specimen: the 0.5 of the loop times the 0.3 DemSystem applied inside before.
+  const Scene s = parse_scene(dem_scene({}), "scene.json", dir_.string());
+  EXPECT_EQ(s.spec.time.safety_factor, 0.15);
+  EXPECT_EQ(s.resolved["time"]["safety_factor"], 0.15);
+  json explicit_factor = dem_scene({});
+  explicit_factor["time"]["safety_factor"] = 0.3;
+  EXPECT_EQ(parse_scene(explicit_factor, "scene.json", dir_.string()).spec.time.safety_factor, 0.3);
+  // The same bits as before: 0.5 x (0.3 x dt) == 0.15 x dt for every normal dt (halving is exact
+  // and 0.15 is the double nearest to 0.3 / 2), so DEM results are unchanged.
+  std::mt19937_64 gen(7);
+  std::uniform_real_distribution<double> u(1e-10, 1e-6);
+  for (int k = 0; k < 100000; ++k) {
+    const double dt = u(gen);
+    ASSERT_EQ(0.5 * (kDemStepFraction * dt), 0.15 * dt) << dt;
+  }
+}
+
 TEST_F(SceneLaws, HertzMindlinParametersReachTheLaw) {
   const DemSpecimenParams d = dem_params(
       dem_scene({{"contact_law", "hertz_mindlin"}, {"grain_friction", 0.4}, {"restitution", 0.8}}));
@@ -126,7 +146,7 @@ TEST_F(SceneLaws, HertzMindlinParametersReachTheLaw) {
   const double rayleigh = std::numbers::pi * g.r * std::sqrt(m.density / 30e9) /
                           (0.1631 * 0.3 + 0.8766);
   EXPECT_NEAR(hm.stable_dt({g.mass(), g.r, rayleigh_time_step(g.r, m)}), rayleigh, 1e-12 * rayleigh);
-  EXPECT_NEAR(dt, DemOptions{}.dt_safety * rayleigh, 1e-12 * dt);
+  EXPECT_NEAR(dt, rayleigh, 1e-12 * dt);
 }
 
 TEST_F(SceneLaws, LinearParametersReachTheLaw) {
@@ -144,7 +164,7 @@ TEST_F(SceneLaws, LinearParametersReachTheLaw) {
   // The normal spring, and 3.5 k_s for the tangential one (a sphere's contact point moves
   // with mass m / 3.5 once it rolls): here 3.5 x 2e5 = 7e5 > k_n sets the step.
   const double expected = std::min(spring_step(g.mass(), 5e5, 0.2), spring_step(g.mass(), 7e5, 0.2));
-  EXPECT_NEAR(dt, DemOptions{}.dt_safety * expected, 1e-12 * dt);
+  EXPECT_NEAR(dt, expected, 1e-12 * dt);
 }
 
 TEST_F(SceneLaws, LsDynaParametersReachTheLaw) {
@@ -171,7 +191,7 @@ TEST_F(SceneLaws, LsDynaParametersReachTheLaw) {
   // K_s = SHEARK K_n (Eq. 3.2); NDAMP and TDAMP as fractions of critical damping.
   const double expected = std::min(spring_step(g.mass(), kn, 0.05),
                                    spring_step(g.mass(), 3.5 * 0.5 * kn, 0.15));
-  EXPECT_NEAR(dt, DemOptions{}.dt_safety * expected, 1e-9 * dt);
+  EXPECT_NEAR(dt, expected, 1e-9 * dt);
 }
 
 TEST_F(SceneLaws, EachLawReachesTheSpecimenBuiltFromTheScene) {
@@ -192,7 +212,7 @@ TEST_F(SceneLaws, EachLawReachesTheSpecimenBuiltFromTheScene) {
     const ContactLaw law = make_contact_law({d.packing.material}, d.contact);
     EXPECT_EQ(name_of(law), name);
     const double limit = std::visit([&](const auto& l) { return l.stable_dt(lim); }, law);
-    EXPECT_EQ(specimen.stable_dt(), DemOptions{}.dt_safety * limit) << name;
+    EXPECT_EQ(specimen.stable_dt(), limit) << name;
   }
 }
 

@@ -141,7 +141,7 @@ TEST(VerifyDemAssembly, OneAndTwoThreadsAgreeBitwise) {
   for (int threads : {1, 2}) {
     omp_set_num_threads(threads);
     DemSystem sys = busy_specimen();
-    const double dt = 0.5 * sys.stable_dt();
+    const double dt = 0.5 * (kDemStepFraction * sys.stable_dt());
     for (int k = 0; k < 300; ++k) sys.step(dt);
     out[threads - 1] = sys.particles();
     rebuilds = sys.n_rebuilds();
@@ -160,7 +160,7 @@ TEST(VerifyDemAssembly, VerletListMissesNoContact) {
   const int saved = omp_get_max_threads();
   omp_set_num_threads(1);  // one thread: keeps the check fast on a loaded machine
   DemSystem sys = busy_specimen();
-  const double dt = 0.5 * sys.stable_dt();
+  const double dt = 0.5 * (kDemStepFraction * sys.stable_dt());
   for (int k = 0; k < 100; ++k) {
     sys.step(dt);
     if (k % 25 == 24) {

@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "core/errors.hpp"
+#include "core/stability_check.hpp"
 #include "dem/contact_hertz_mindlin.hpp"
 
 namespace kolsky::dem {
@@ -42,8 +43,6 @@ DemSystem::DemSystem(Particles particles, std::vector<Material> materials, Conta
       law_);
   if (!(opt_.skin_over_min_radius > 0))
     throw InputError("", "dem.skin_over_min_radius", "must be > 0");
-  if (!(opt_.dt_safety > 0 && opt_.dt_safety <= 1))
-    throw InputError("", "dem.dt_safety", "must be in (0, 1]");
   if (!(opt_.owner_block > 0)) throw InputError("", "dem.owner_block", "must be > 0");
   const double k = opt_.rolling.factor_per_reference_step;
   if (!(k >= 0 && k <= 1)) throw InputError("", "dem.rolling.factor", "must be in [0, 1]");
@@ -127,19 +126,18 @@ double DemSystem::compute_stable_dt() const {
   // 2005), sqrt(m/k)(sqrt(1 + zeta^2) - zeta) of its stiffest spring on the lightest grain for
   // a linear one (Eqs. 3.1-3.2 for LS-DYNA's). `linear` gathers them all with the tube's ring
   // mode, so no law type is named here; the Rayleigh step arrives through the Hertz laws' own
-  // limit, hence `hertz` = false in the policy line below (a minimum is exact: the same bits).
+  // limit. The minimum is the raw limit: no safety factor here (the stepping loop owns it).
   const LawLimits limits{m_min, r_max, rayleigh};
   const auto limit_of = [&](const auto& family) {
     return std::visit([&](const auto& law) { return law.stable_dt(limits); }, family);
   };
-  const bool hertz = false;
-  double linear = limit_of(law_);
-  for (const auto& s : planes_) linear = std::min(linear, limit_of(s.wall.law));
+  double limit = limit_of(law_);
+  for (const auto& s : planes_) limit = std::min(limit, limit_of(s.wall.law));
   for (const auto& t : tubes_) {
-    linear = std::min(linear, limit_of(t.wall.law));
-    if (t.mass > 0) linear = std::min(linear, std::sqrt(t.mass / t.stiffness));
+    limit = std::min(limit, limit_of(t.wall.law));
+    if (t.mass > 0) limit = std::min(limit, std::sqrt(t.mass / t.stiffness));
   }
-  return opt_.dt_safety * std::min(hertz ? rayleigh : inf, linear);
+  return limit;
 }
 
 double DemSystem::stable_dt() const {
@@ -151,13 +149,9 @@ double DemSystem::stable_dt() const {
 void DemSystem::check_dt(double dt) const {
   if (dt > 0 && dt <= stable_dt_ * (1 + 1e-12)) return;  // refreshed by begin_step
   if (!(dt > 0)) throw InputError("", "dem.dt", "must be > 0");
-  // A step above the limit is a numerical failure, not bad input: the run's own dt was
-  // checked when it was planned, so the limit fell during the run (an edit, a break).
-  std::ostringstream s;
-  s << "dem: dt = " << dt << " s is above the stable limit " << stable_dt_ << " s at t = "
-    << time_ << " s (" << opt_.dt_safety << " x min(Rayleigh step of the smallest grain, "
-    << "sqrt(m/k) of the stiffest linear contact, tube ring mode))";
-  throw NumericalError(s.str(), time_);
+  check_time_step(dt, stable_dt_, "dem", time_,
+                  "min of the Rayleigh step of the smallest grain, sqrt(m/k) of the stiffest linear "
+                  "contact and the tube ring mode");
 }
 
 void DemSystem::step(double dt) {

@@ -30,7 +30,6 @@ struct RollingRetardation {
 
 struct DemOptions {
   double skin_over_min_radius = 0.5;  ///< Verlet skin as a multiple of the smallest radius
-  double dt_safety = 0.3;             ///< stable dt = safety x the smallest limit (see header)
   RollingRetardation rolling;
   /// Hertz-Mindlin grain pairs through the batched, branch-free kernel
   /// (hertz_mindlin_batch.hpp; bitwise the same results). false: the per-contact kernel, kept
@@ -51,6 +50,14 @@ struct DemOptions {
   /// 0: never. Without edits it never fires.
   double resort_added_fraction = 0.1;
 };
+
+/// The fraction of stable_dt() at which kolsky's own DEM loops step (packing, pre-stress,
+/// tests): 0.3 of the Rayleigh step, the upper end of the fractions in common DEM use, since a
+/// grain with several contacts has a shorter critical step than one contact gives (O'Sullivan
+/// and Bray 2004). It is the fraction kolsky has always stepped at, so packings and results
+/// keep their bits. A scene run applies time.safety_factor instead (0.5 x this by default for
+/// a DEM specimen).
+inline constexpr double kDemStepFraction = 0.3;
 
 /// One particle edit (a grain replaced by its fragments, Sec. 5.2.3): remove the grains
 /// `removed` (indices, unique, any order), then append `added` (positions, velocities, spins,
@@ -93,7 +100,10 @@ class DemSystem {
   /// evaluation.
   void drive_plane(int plane, double offset, double speed);
 
-  /// Largest dt step() accepts (s).
+  /// Largest dt step() accepts (s): the raw limit, min over the Rayleigh step of the smallest
+  /// grain, sqrt(m/k) of the stiffest linear contact and the tube ring mode, with no safety
+  /// factor in it. The loop that steps the system applies its own fraction once (the scene's
+  /// time.safety_factor; kDemStepFraction in kolsky's own DEM loops).
   double stable_dt() const;
   /// One step of size dt (s): begin_step(dt) then finish_step(). Throws kolsky::InputError
   /// ("dem.dt") if dt <= 0, kolsky::NumericalError if dt > stable_dt() (the limit fell).

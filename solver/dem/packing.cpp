@@ -58,7 +58,7 @@ void loose_stage(const PackingParams& in, Particles p, const std::vector<double>
   DemSystem sys(std::move(p), materials, law, DemOptions{});
   add_packing_walls(sys, R, L, law);
   // The lightest grain only grows, so the step of the shrunk state stays stable throughout.
-  const double dt = sys.stable_dt();
+  const double dt = kDemStepFraction * sys.stable_dt();
   auto stage = [&](double scale) {
     set_scale(sys.mutable_particles(), target, scale, in.material.density, in.velocity_quench);
     for (int k = 0; k < in.steps_per_stage; ++k) sys.step(dt);
@@ -106,7 +106,7 @@ void jam_stage(const PackingParams& in, Particles p, const std::vector<double>& 
   sys.emplace(std::move(p), materials, law_of(in.jam_friction), DemOptions{});
   // Frictionless walls, so the wall zone is not held looser than the core by wall friction.
   add_packing_walls(*sys, R, L, law_of(0.0));
-  const double dt = sys->stable_dt();
+  const double dt = kDemStepFraction * sys->stable_dt();
   const int sps = in.jam_steps_per_stage;
   auto stage = [&](double scale, double quench) {
     set_scale(sys->mutable_particles(), target, scale, in.material.density, quench);

@@ -96,7 +96,7 @@ PrestressOutcome prestress_packing(Particles& p, const PackingParams& in) {
   // The Rayleigh step scales with r, a wall spring's sqrt(m/k) with r^1.5: 0.98 of the step at
   // s = 1 stays stable down to s = 0.99 (0.99^1.5 = 0.985), and the servo keeps s within 1 %
   // of 1 (Hertz overlaps at kPa-MPa are ~1e-4 r).
-  const double dt = 0.98 * sys.stable_dt();
+  const double dt = 0.98 * (kDemStepFraction * sys.stable_dt());
   while (!out.converged && out.steps < in.prestress_max_steps) {
     double sum = 0;
     for (int k = 0; k < interval; ++k) {

@@ -179,11 +179,16 @@ shpb::SpecimenSpec read_specimen(JsonReader& r, const std::string& base_dir) {
   return c;
 }
 
-shpb::TimeSpec read_time(JsonReader& r) {
+shpb::TimeSpec read_time(JsonReader& r, const shpb::SpecimenSpec& specimen) {
   shpb::TimeSpec t;
   t.end_time = r.number("time.end");
   t.dt = r.number("time.dt");
-  t.safety_factor = r.number("time.safety_factor");
+  if (r.has("time.safety_factor")) {
+    t.safety_factor = r.number("time.safety_factor");
+  } else {
+    t.safety_factor = shpb::default_safety_factor(specimen);  // documented in the table
+    r.resolve("time.safety_factor", t.safety_factor);
+  }
   t.check_stability = r.boolean("time.check_stability");
   t.energy_tolerance = r.number("time.energy_tolerance");
   return t;
@@ -216,7 +221,7 @@ Scene parse_scene(const nlohmann::json& j, const std::string& file, const std::s
     r.fail("specimen.diameter", "inconsistent geometry: specimen diameter " +
                                     show(shpb::specimen_diameter(e.specimen)) +
                                     " m exceeds 4 x the bar diameter (" + show(bar_d) + " m)");
-  e.time = read_time(r);
+  e.time = read_time(r, e.specimen);
   e.output.interval = r.number("output.interval");
   if (std::holds_alternative<dem::DemSpecimenParams>(e.specimen))
     e.output.snapshot_interval = r.number("output.snapshot_interval");

@@ -152,8 +152,10 @@ std::vector<ParamSpec> build_table() {
   s.add(VT::number, "time.end", kRequired, "s", kPositive, "Simulated time");
   s.add(VT::number, "time.dt", time.dt, "s", kNonNegative,
         "Time step; 0 = safety_factor x stable time step");
-  s.add(VT::number, "time.safety_factor", time.safety_factor, "-", kHalfOpenUnitUpper,
-        "Fraction of the stable time step used when dt = 0");
+  s.add_derived(VT::number, "time.safety_factor", "0.5; 0.15 for specimen.model = dem", "-",
+                kHalfOpenUnitUpper,
+                "Fraction of the models' raw stable time step used when dt = 0 (the run's only "
+                "safety factor; a DEM specimen's raw limit is the single-contact Rayleigh step)");
   s.add(VT::boolean, "time.check_stability", time.check_stability, "-", kNoRange,
         "Stop on non-finite values or energy growth (false only to test the detector)");
   s.add(VT::number, "time.energy_tolerance", time.energy_tolerance, "-", kPositive,
