@@ -17,7 +17,7 @@ help:
 	@echo "  make               build (Release) after installing missing Debian packages"
 	@echo "  make test          unit tests, verification checks and smoke reproductions (CTest)"
 	@echo "  make check         unit tests and verification checks only (about a minute)"
-	@echo "  make reproduce     every reproduction set at full scale -> $(REPORTS)/<set>/"
+	@echo "  make reproduce     every reproduction set at full scale -> $(REPORTS)/<set>/, index in $(REPORTS)/index.html"
 	@echo "  make reproduce-<set>   one set: $(SETS)"
 	@echo "  make reproduce-chapter2  Chapter 2 (EOS back-calculation, equilibrium, water content; ~5 min)"
 	@echo "  make reproduce-chapter4  Chapter 4 DEM SHPB, N = 2: 4 runs + upscaling and seed studies (~40 min from scratch, ~13 min cached on 2 threads; see reproductions/chapter4/README.md)"
@@ -45,10 +45,11 @@ test: build
 check: build
 	@cd $(BUILD) && ctest --output-on-failure -j $(JOBS) -L check
 
+# Ends with $(REPORTS)/index.md and index.html: every set's counts, run time, commit, links, plots.
 reproduce: build
 	@status=0; for s in $(SETS); do \
 	  $(BUILD)/reproductions/reproduce_$$s --scale full --out $(REPORTS)/$$s || status=1; \
-	done; exit $$status
+	done; $(BUILD)/reproductions/reports_index --reports $(REPORTS) $(SETS) || status=1; exit $$status
 
 reproduce-verification reproduce-bars reproduce-chapter2 reproduce-chapter4: reproduce-%: build
 	@$(BUILD)/reproductions/reproduce_$* --scale full --out $(REPORTS)/$*

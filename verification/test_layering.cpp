@@ -1,7 +1,7 @@
 // House rules that keep the tree readable, checked on the sources themselves:
 //  - modules depend downward only (docs/architecture.md): core <- time <- psd <- physics (bar,
-//    fe, dem, eos) <- coupling <- shpb <- io <- scene <- app; physics never includes io, scene
-//    or app;
+//    fe, dem, eos) <- coupling <- shpb <- io <- scene | plot <- app; physics never includes io,
+//    scene, plot or app;
 //  - every number a reproduction target quotes from the dissertation is also recorded, with
 //    its provenance, under data/digitized/ (same id, same value).
 #include <gtest/gtest.h>
@@ -22,9 +22,12 @@ namespace {
 // psd (grain-size curves) holds no physics: DEM packing builds on it, so it sits below.
 // coupling is where two physics modules may meet (FE surfaces <-> DEM walls, for the coupled
 // FEM-DEM assembly of shpb/assembly.hpp), so it sits above them and below shpb.
+// plot (gnuplot figures, for the program and the reports) draws shpb records and needs no
+// scene: a sibling of scene, so neither includes the other and no physics includes plotting.
 const std::map<std::string, int> kLayer = {{"core", 0}, {"time", 1},     {"psd", 2},  {"bar", 3},
                                            {"fe", 3},   {"dem", 3},      {"eos", 3},  {"coupling", 4},
-                                           {"shpb", 5}, {"io", 6},       {"scene", 7}, {"app", 8}};
+                                           {"shpb", 5}, {"io", 6},       {"scene", 7}, {"plot", 7},
+                                           {"app", 8}};
 
 TEST(Layering, ModulesIncludeOnlyLowerLayers) {
   const fs::path solver = fs::path(KOLSKY_SOURCE_DIR) / "solver";

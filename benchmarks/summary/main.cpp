@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "plot/gnuplot.hpp"
 #include "summary/plot.hpp"
 #include "summary/report.hpp"
 #include "summary/results.hpp"
@@ -114,7 +115,7 @@ int run(const std::vector<std::string>& args) {
   const std::string cmd = args[0];
   const std::vector<std::string> rest(args.begin() + 1, args.end());
   if (cmd == "summary") {
-    std::string results, out, gnuplot = default_gnuplot();
+    std::string results, out, gnuplot = kolsky::plot::default_gnuplot();
     for (std::size_t i = 0; i < rest.size(); ++i) {
       if (i + 1 >= rest.size()) return usage(rest[i] + " needs a value");
       if (rest[i] == "--results") results = rest[++i];

@@ -1,10 +1,8 @@
-// See plot.hpp. The gnuplot run itself is the harness's (harness::render_script).
+// See plot.hpp. Colours, quoting, file names and the gnuplot run are solver/plot's.
 #include "summary/plot.hpp"
 
-#include "harness/plot.hpp"
-
 #include "core/atomic_file.hpp"
-
+#include "plot/gnuplot.hpp"
 
 #include <algorithm>
 #include <charconv>
@@ -18,21 +16,12 @@ namespace {
 
 namespace fs = std::filesystem;
 
-constexpr auto& kColours = harness::kPlotColours;  // the reports' colours and quoting
-std::string quote(const std::string& s) { return harness::gnuplot_quote(s); }
+using plot::gnuplot_quote;
+using plot::kPlotColours;
 
 std::string num(double v) {
   char buf[40];
   return std::string(buf, std::to_chars(buf, buf + sizeof buf, v, std::chars_format::general, 12).ptr);
-}
-
-std::string stem_of(const std::string& f) {
-  const bool plain = !f.empty() && f.front() != '.' &&
-                     f.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ"
-                                         "0123456789_.-") == std::string::npos;
-  if (!plain || f.size() <= 4 || f.compare(f.size() - 4, 4, ".png") != 0)
-    throw std::invalid_argument("figure file '" + f + "' must be a plain name ending in .png");
-  return f.substr(0, f.size() - 4);
 }
 
 std::string with_clause(const std::string& style) {
@@ -50,22 +39,20 @@ bool drawable(const Series& s) {
 
 }  // namespace
 
-std::string default_gnuplot() { return harness::default_gnuplot(); }
-
 std::string gnuplot_script(const Figure& f) {
-  const std::string stem = stem_of(f.file);
+  const std::string stem = plot::png_stem(f.file);
   std::string gp = "# " + f.title + "\n# Regenerate: run `gnuplot " + stem + ".gp` in this folder; it writes ../" +
                    f.file + ".\n";
-  gp += "if (!exists(\"outfile\")) outfile = " + quote("../" + f.file) + "\n";
+  gp += "if (!exists(\"outfile\")) outfile = " + gnuplot_quote("../" + f.file) + "\n";
   gp += "set terminal pngcairo size 1000,620 noenhanced font 'sans,11'\nset output outfile\n";
-  gp += "set title " + quote(f.title) + "\nset xlabel " + quote(f.xlabel) + "\nset ylabel " + quote(f.ylabel) + "\n";
+  gp += "set title " + gnuplot_quote(f.title) + "\nset xlabel " + gnuplot_quote(f.xlabel) + "\nset ylabel " + gnuplot_quote(f.ylabel) + "\n";
   gp += "set grid\nset key " + f.key + " opaque box Left reverse\n";
   if (f.logx) gp += "set logscale x\n";
   if (f.logy) gp += "set logscale y\n";
   if (!f.xtics.empty()) {
     gp += "set xrange [-0.5:" + num(static_cast<double>(f.xtics.size()) - 0.5) + "]\nset xtics rotate by 35 right (";
     for (std::size_t i = 0; i < f.xtics.size(); ++i)
-      gp += (i ? ", " : "") + quote(f.xtics[i]) + " " + std::to_string(i);
+      gp += (i ? ", " : "") + gnuplot_quote(f.xtics[i]) + " " + std::to_string(i);
     gp += ")\n";
   }
   bool any_y2 = false;
@@ -74,7 +61,7 @@ std::string gnuplot_script(const Figure& f) {
     any_y2 = any_y2 || (s.y2 && drawable(s));
     for (double v : s.y) (s.y2 ? max2 : max1) = std::max(s.y2 ? max2 : max1, v);
   }
-  if (any_y2) gp += "set ytics nomirror\nset y2tics\nset y2label " + quote(f.y2label) + "\n";
+  if (any_y2) gp += "set ytics nomirror\nset y2tics\nset y2label " + gnuplot_quote(f.y2label) + "\n";
   // Linear axes from zero, so that a difference looks as large as it is, and up to 1.5 x the
   // largest value, so that the key in the top corner covers no point.
   if (!f.logy) {
@@ -87,15 +74,15 @@ std::string gnuplot_script(const Figure& f) {
   for (std::size_t k = 0; k < f.series.size(); ++k) {
     const Series& s = f.series[k];
     if (!drawable(s)) continue;
-    plot += (plot.empty() ? "plot " : ", \\\n     ") + quote(stem + ".dat") + " index " + std::to_string(block++) +
+    plot += (plot.empty() ? "plot " : ", \\\n     ") + gnuplot_quote(stem + ".dat") + " index " + std::to_string(block++) +
             " using 1:2" + (s.y2 ? " axes x1y2" : "") + " with " + with_clause(s.style) + " lc rgb '" +
-            kColours[k % std::size(kColours)] + "' title " + quote(s.label);
+            kPlotColours[k % std::size(kPlotColours)] + "' title " + gnuplot_quote(s.label);
   }
   return gp + (plot.empty() ? "# nothing to plot" : plot) + "\n";
 }
 
 RenderResult render(const Figure& f, const std::string& out_dir, const std::string& gnuplot) {
-  const std::string stem = stem_of(f.file);
+  const std::string stem = plot::png_stem(f.file);
   const fs::path src = fs::path(out_dir) / "plots_src";
   fs::create_directories(src);
   std::string dat;
@@ -110,7 +97,7 @@ RenderResult render(const Figure& f, const std::string& out_dir, const std::stri
   write_file_atomic((src / (stem + ".dat")).string(), dat);
   write_file_atomic((src / (stem + ".gp")).string(), gnuplot_script(f));
   if (!any) return {false, "not generated: no data"};
-  const std::string why = harness::render_script(gnuplot, out_dir, stem, f.file);
+  const std::string why = plot::render_script(gnuplot, out_dir, stem, f.file);
   return {why.empty(), why.empty() ? "" : "not generated: " + why};
 }
 

@@ -1,8 +1,7 @@
-// Figures of the benchmark summary through gnuplot, as reproductions/harness/plot.cpp does it:
-// a .dat + .gp pair per figure kept in <out>/plots_src/ (a reader can edit and re-run them),
-// gnuplot run by fork/exec (no shell parses labels or paths) in that folder, the PNG written
-// under a temporary name and renamed. The harness's Plot has no labelled x ticks and no second
-// y axis, which the over-commits figures need, hence this small variant.
+// Figures of the benchmark summary through gnuplot, with solver/plot/gnuplot.hpp: a .dat + .gp
+// pair per figure kept in <out>/plots_src/ (a reader can edit and re-run them), rendered by
+// plot::render_script. plot::Plot has no labelled x ticks and no second y axis, which the
+// over-commits figures need, hence this small variant of the script writer.
 #pragma once
 #include <string>
 #include <vector>
@@ -30,9 +29,6 @@ struct RenderResult {
   bool ok = false;
   std::string message;  ///< why not, when !ok
 };
-
-/// The gnuplot CMake found (compile definition GNUPLOT_EXECUTABLE), "" when none.
-std::string default_gnuplot();
 
 /// The .gp script of `f` reading <stem>.dat (exposed for the unit test).
 std::string gnuplot_script(const Figure& f);

@@ -1,66 +1,17 @@
-// Report figures through gnuplot: one .dat + .gp pair per plot in <out_dir>/plots_src/ (kept so a
-// reader can edit and re-run them), rendered to <out_dir>/<file>.png with pngcairo 900x600.
-// gnuplot is optional: without it (or if it fails) the report says "plot not generated".
+// The report figures are the program's (solver/plot/gnuplot.hpp): one plotting code for the
+// reports, the benchmark summary and `kolsky analyze|run --plot`. The drivers keep writing
+// harness::Plot; these names are that code's, not copies.
 #pragma once
-#include <string>
-#include <vector>
+#include "plot/gnuplot.hpp"
 
 namespace kolsky::harness {
 
-/// A measured or computed line. style: "lines" | "points" | "linespoints" | "dashed" | "steps".
-struct PlotSeries {
-  std::string label;
-  std::vector<double> x, y;
-  std::string style = "lines";
-};
-
-/// A shaded band lo(x)..hi(x) (tolerance envelope, experimental scatter).
-struct PlotBand {
-  std::string label;
-  std::vector<double> x, lo, hi;
-};
-
-/// Reference points, with symmetric y error bars when yerr is non-empty (same length as x).
-struct PlotPoints {
-  std::string label;
-  std::vector<double> x, y, yerr;
-};
-
-struct Plot {
-  std::string file;  // "stress_strain.png": a plain file name in out_dir, ending in .png
-  std::string title, xlabel, ylabel;
-  std::vector<PlotSeries> series;
-  std::vector<PlotBand> bands;
-  std::vector<PlotPoints> reference_points;
-  bool logx = false, logy = false;
-};
-
-/// Outcome of one plot: ok, or why not (shown in the report instead of the image).
-struct PlotResult {
-  bool ok = false;
-  std::string message;
-};
-
-/// Colour-blind-safe cycle (Okabe-Ito) of every figure, in drawing order.
-inline constexpr const char* kPlotColours[] = {"#0072B2", "#D55E00", "#009E73", "#CC79A7",
-                                               "#E69F00", "#56B4E9", "#000000", "#F0E442"};
-/// A gnuplot single-quoted string: '' for a quote, line breaks as spaces.
-std::string gnuplot_quote(const std::string& s);
-
-/// The gnuplot the build found (compile definition GNUPLOT_EXECUTABLE); "" when there is none.
-std::string default_gnuplot();
-
-/// Writes out_dir/plots_src/<stem>.{dat,gp} and, when gnuplot is a usable executable, renders
-/// out_dir/<file> (written to a temporary name and renamed, so a failed run leaves no half PNG).
-/// Throws std::invalid_argument for a bad file name or mismatched vector lengths (driver bugs);
-/// gnuplot failures are returned, with the tail of its output, not thrown.
-PlotResult render_plot(const Plot& p, const std::string& out_dir, const std::string& gnuplot);
-
-/// Renders out_dir/plots_src/<stem>.gp (which sets `outfile` unless given) to out_dir/<png>:
-/// gnuplot by fork/exec in plots_src/ (no shell parses labels or paths), the PNG written under a
-/// temporary name and renamed. Returns "" on success, else why not (gnuplot missing, its exit
-/// status and the tail of its log, no image). Shared by render_plot and the benchmark summary.
-std::string render_script(const std::string& gnuplot, const std::string& out_dir,
-                          const std::string& stem, const std::string& png);
+using plot::default_gnuplot;
+using plot::Plot;
+using plot::PlotBand;
+using plot::PlotPoints;
+using plot::PlotResult;
+using plot::PlotSeries;
+using plot::render_plot;
 
 }  // namespace kolsky::harness

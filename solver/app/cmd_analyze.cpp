@@ -1,4 +1,4 @@
-// `kolsky analyze GAUGES.csv --bars BARS.json [-o OUT.csv] [--quiet]`
+// `kolsky analyze GAUGES.csv --bars BARS.json [-o OUT.csv] [--plot DIR] [--quiet]`
 // GAUGES.csv: three columns in this order, time (s), incident-bar gauge strain, transmission-
 // bar gauge strain, as measured (compression negative); '#' comments and a header row allowed.
 #include <cstdio>
@@ -6,18 +6,21 @@
 #include <stdexcept>
 
 #include "app/commands.hpp"
+#include "app/plot_output.hpp"
 #include "app/summary.hpp"
 #include "core/errors.hpp"
 #include "io/csv.hpp"
+#include "plot/shpb_figures.hpp"
 #include "scene/scene.hpp"
 #include "shpb/gauge_processing.hpp"
 
 namespace kolsky::app {
 
 int cmd_analyze(const std::vector<std::string>& args) {
-  const Options o = parse_options(args, {"-o", "--bars", "--quiet"});
+  const Options o = parse_options(args, {"-o", "--bars", "--plot", "--quiet"});
   if (o.positional.size() != 1) throw UsageError("needs exactly one GAUGES.csv");
   if (o.bars.empty()) throw UsageError("needs --bars BARS.json");
+  const std::string gnuplot = o.plot_dir.empty() ? "" : prepare_plots(o.plot_dir);
   const std::string& file = o.positional[0];
   const scene::BarsFile bars = scene::load_bars_file(o.bars);
   const io::CsvTable csv = io::read_csv(file);
@@ -58,6 +61,9 @@ int cmd_analyze(const std::vector<std::string>& args) {
   std::printf("kolsky analyze: %s -> %s\n", file.c_str(), out.c_str());
   if (!o.quiet) std::fputs(format_summary(s).c_str(), stdout);
   for (const auto& w : report.warnings) std::fprintf(stderr, "kolsky analyze: warning: %s\n", w.c_str());
+  if (!o.plot_dir.empty())
+    write_plots(plot::analyze_figures(rec, report, bars.setup, waves, h, file), o.plot_dir, gnuplot,
+                "analyze");
   return 0;
 }
 

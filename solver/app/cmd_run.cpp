@@ -1,7 +1,7 @@
-// `kolsky run SCENE.json [-o OUT.h5] [--gauges-csv G.csv] [--threads N] [--quiet]
+// `kolsky run SCENE.json [-o OUT.h5] [--gauges-csv G.csv] [--plot DIR] [--threads N] [--quiet]
 //  [--checkpoint-every S [--checkpoint-file CK.h5]] [--restart CK.h5]`: builds the scene's SHPB
 // assembly (shpb/assembly.hpp), runs it, and writes its probes by name plus the classic
-// analysis of the face waves.
+// analysis of the face waves (and, with --plot, their figures).
 #include <omp.h>
 
 #include <algorithm>
@@ -14,12 +14,14 @@
 #include <string>
 
 #include "app/commands.hpp"
+#include "app/plot_output.hpp"
 #include "app/summary.hpp"
 #include "core/progress.hpp"
 #include "io/checkpoint_hdf5.hpp"
 #include "io/csv.hpp"
 #include "io/hdf5_run.hpp"
 #include "io/snapshots.hpp"
+#include "plot/shpb_figures.hpp"
 #include "scene/scene.hpp"
 #include "shpb/simulation.hpp"
 #include "core/build_info.hpp"
@@ -89,11 +91,12 @@ long steps_per(double seconds, double dt) {
 }  // namespace
 
 int cmd_run(const std::vector<std::string>& args) {
-  const Options o = parse_options(args, {"-o", "--threads", "--quiet", "--gauges-csv",
+  const Options o = parse_options(args, {"-o", "--threads", "--quiet", "--gauges-csv", "--plot",
                                          "--checkpoint-every", "--checkpoint-file", "--restart"});
   if (!o.checkpoint_file.empty() && o.checkpoint_every <= 0)
     throw UsageError("--checkpoint-file needs --checkpoint-every");
   if (o.positional.size() != 1) throw UsageError("needs exactly one SCENE.json");
+  const std::string gnuplot = o.plot_dir.empty() ? "" : prepare_plots(o.plot_dir);
   const std::string& file = o.positional[0];
   if (o.threads > 0) omp_set_num_threads(o.threads);
   scene::Scene sc = scene::load_scene(file);
@@ -195,6 +198,7 @@ int cmd_run(const std::vector<std::string>& args) {
   std::printf("  %-26s %ld\n  %-26s %.6g\n  %-26s %.3g\n", "steps", r.steps, "dt_s", r.dt,
               "wall_time_s", wall);
   std::fputs(format_summary(summary).c_str(), stdout);
+  if (!o.plot_dir.empty()) write_plots(plot::run_figures(r, waves, h, file), o.plot_dir, gnuplot, "run");
   if (!r.complete) {
     std::fprintf(stderr, "kolsky: numerical failure: %s; output kept in %s, marked incomplete\n",
                  r.failure.c_str(), out.c_str());

@@ -16,11 +16,11 @@ int cmd_analyze(const std::vector<std::string>& args);
 int cmd_defaults(const std::vector<std::string>& args);
 int cmd_eos(const std::vector<std::string>& args);
 
-/// Parsed options: positional arguments plus "-o", "--bars", "--threads" values and flags;
-/// run's checkpoint options "--checkpoint-every" (s), "--checkpoint-file", "--restart".
+/// Parsed options: positional arguments plus "-o", "--bars", "--threads", "--plot" values and
+/// flags; run's checkpoint options "--checkpoint-every" (s), "--checkpoint-file", "--restart".
 struct Options {
   std::vector<std::string> positional;
-  std::string output, bars, gauges_csv, checkpoint_file, restart;
+  std::string output, bars, gauges_csv, checkpoint_file, restart, plot_dir;
   double checkpoint_every = 0;
   int threads = 0;
   bool quiet = false;

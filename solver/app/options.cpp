@@ -23,6 +23,7 @@ Options parse_options(const std::vector<std::string>& args, const std::vector<st
       else if (a == "--gauges-csv") o.gauges_csv = v;
       else if (a == "--checkpoint-file") o.checkpoint_file = v;
       else if (a == "--restart") o.restart = v;
+      else if (a == "--plot") o.plot_dir = v;
       else if (a == "--checkpoint-every") {
         try {
           size_t used = 0;

@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "core/atomic_file.hpp"
+#include "io/xml_escape.hpp"
 
 namespace kolsky::io {
 
@@ -26,18 +27,6 @@ std::string data_item(const std::string& h5_name, std::size_t k, const char* set
   return "<DataItem Dimensions=\"" + dims + "\" NumberType=\"Float\" Precision=\"8\" "
          "Format=\"HDF\">" + h5_name + ":/snapshots/" + std::to_string(k) + "/" + set +
          "</DataItem>";
-}
-
-std::string xml_escape(const std::string& s) {
-  std::string out;
-  for (char c : s) {
-    if (c == '&') out += "&amp;";
-    else if (c == '<') out += "&lt;";
-    else if (c == '>') out += "&gt;";
-    else if (c == '"') out += "&quot;";
-    else out += c;
-  }
-  return out;
 }
 
 }  // namespace

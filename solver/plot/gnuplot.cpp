@@ -1,7 +1,7 @@
-// gnuplot rendering for report figures (see plot.hpp). gnuplot is run with fork/exec rather than
-// std::system so that no shell parses labels or paths, and with its working directory set to
-// plots_src/ so the kept script uses the same relative paths when a reader re-runs it.
-#include "harness/plot.hpp"
+// gnuplot rendering (see gnuplot.hpp). gnuplot is run with fork/exec rather than std::system so
+// that no shell parses labels or paths, and with its working directory set to plots_src/ so the
+// kept script uses the same relative paths when a reader re-runs it.
+#include "plot/gnuplot.hpp"
 
 #include "core/atomic_file.hpp"
 
@@ -9,27 +9,20 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <charconv>
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
 
-#ifndef GNUPLOT_EXECUTABLE
-#define GNUPLOT_EXECUTABLE ""
-#endif
-
-namespace kolsky::harness {
+namespace kolsky::plot {
 namespace {
 
 namespace fs = std::filesystem;
-
-constexpr auto& kColours = kPlotColours;
-
-/// gnuplot single-quoted string: no escapes except '' for a quote; line breaks become spaces.
-std::string quote(const std::string& s) { return gnuplot_quote(s); }
 
 void put(std::string& out, double v) {
   if (!std::isfinite(v)) {
@@ -68,22 +61,11 @@ void require_same_size(const std::string& plot, const std::string& label,
       throw std::invalid_argument("plot " + plot + ", '" + label + "': vectors differ in length");
 }
 
-std::string file_stem(const Plot& p) {
-  const std::string& f = p.file;
-  const bool plain = !f.empty() && f.front() != '.' &&
-                     f.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ"
-                                         "0123456789_.-") == std::string::npos;
-  if (!plain || f.size() <= 4 || f.compare(f.size() - 4, 4, ".png") != 0)
-    throw std::invalid_argument("plot file '" + f +
-                                "' must be a plain name ([A-Za-z0-9_.-]) ending in .png");
-  return f.substr(0, f.size() - 4);
-}
-
 /// Runs `gnuplot -e "outfile='...'" script` in dir; returns "" on success or why it failed.
 std::string run_gnuplot(const std::string& gnuplot, const std::string& dir,
                         const std::string& script, const std::string& outfile,
                         const std::string& log) {
-  const std::string setting = "outfile=" + quote(outfile);
+  const std::string setting = "outfile=" + gnuplot_quote(outfile);
   std::vector<std::string> args = {gnuplot, "-e", setting, script};
   std::vector<char*> argv;
   for (auto& a : args) argv.push_back(a.data());
@@ -125,7 +107,37 @@ std::string run_gnuplot(const std::string& gnuplot, const std::string& dir,
 
 }  // namespace
 
-std::string default_gnuplot() { return GNUPLOT_EXECUTABLE; }
+std::string default_gnuplot() {
+  if (const char* chosen = std::getenv("KOLSKY_GNUPLOT")) return chosen;
+  const char* path = std::getenv("PATH");
+  std::string dirs = path ? path : "";
+  for (size_t begin = 0; begin <= dirs.size();) {
+    const size_t end = std::min(dirs.find(':', begin), dirs.size());
+    const std::string dir = end > begin ? dirs.substr(begin, end - begin) : ".";
+    const std::string candidate = dir + "/gnuplot";
+    if (access(candidate.c_str(), X_OK) == 0 && fs::is_regular_file(candidate)) return candidate;
+    begin = end + 1;
+  }
+  return "";
+}
+
+std::string gnuplot_missing(const std::string& gnuplot) {
+  if (gnuplot.empty()) return "gnuplot not available (none on PATH, KOLSKY_GNUPLOT unset or empty)";
+  std::error_code ec;
+  if (access(gnuplot.c_str(), X_OK) != 0 || !fs::is_regular_file(gnuplot, ec))
+    return "gnuplot not available at " + gnuplot;
+  return "";
+}
+
+std::string png_stem(const std::string& f) {
+  const bool plain = !f.empty() && f.front() != '.' &&
+                     f.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ"
+                                         "0123456789_.-") == std::string::npos;
+  if (!plain || f.size() <= 4 || f.compare(f.size() - 4, 4, ".png") != 0)
+    throw std::invalid_argument("plot file '" + f +
+                                "' must be a plain name ([A-Za-z0-9_.-]) ending in .png");
+  return f.substr(0, f.size() - 4);
+}
 
 std::string gnuplot_quote(const std::string& s) {
   std::string out = "'";
@@ -138,7 +150,7 @@ std::string gnuplot_quote(const std::string& s) {
 }
 
 PlotResult render_plot(const Plot& p, const std::string& out_dir, const std::string& gnuplot) {
-  const std::string stem = file_stem(p);
+  const std::string stem = png_stem(p.file);
   const fs::path src = fs::path(out_dir) / "plots_src";
   fs::create_directories(src);
 
@@ -149,9 +161,9 @@ PlotResult render_plot(const Plot& p, const std::string& out_dir, const std::str
                              const std::string& using_with, const std::string& label) {
     if (rows.empty()) return;
     dat += "# " + header + "\n" + rows + "\n\n";
-    plot_cmd += (plot_cmd.empty() ? "plot " : ", \\\n     ") + quote(stem + ".dat") + " index " +
+    plot_cmd += (plot_cmd.empty() ? "plot " : ", \\\n     ") + gnuplot_quote(stem + ".dat") + " index " +
                 std::to_string(block++) + " using " + using_with + " lc rgb '" +
-                kColours[colour++ % std::size(kColours)] + "' title " + quote(label);
+                kPlotColours[colour++ % std::size(kPlotColours)] + "' title " + gnuplot_quote(label);
   };
   for (const PlotBand& b : p.bands) {
     require_same_size(p.file, b.label, {&b.x, &b.lo, &b.hi});
@@ -181,13 +193,14 @@ PlotResult render_plot(const Plot& p, const std::string& out_dir, const std::str
 
   std::string gp = "# " + p.title + "\n# Regenerate: run `gnuplot " + stem +
                    ".gp` in this folder; it writes ../" + p.file + ".\n";
-  gp += "if (!exists(\"outfile\")) outfile = " + quote("../" + p.file) + "\n";
+  gp += "if (!exists(\"outfile\")) outfile = " + gnuplot_quote("../" + p.file) + "\n";
   gp += "set terminal pngcairo size 900,600 noenhanced font 'sans,11'\nset output outfile\n";
-  gp += "set title " + quote(p.title) + "\nset xlabel " + quote(p.xlabel) + "\nset ylabel " +
-        quote(p.ylabel) + "\n";
+  gp += "set title " + gnuplot_quote(p.title) + "\nset xlabel " + gnuplot_quote(p.xlabel) + "\nset ylabel " +
+        gnuplot_quote(p.ylabel) + "\n";
   gp += "set grid\nset key top left opaque box Left reverse\nset style fill transparent solid 0.25 noborder\n";
-  if (p.logx) gp += "set logscale x\n";
-  if (p.logy) gp += "set logscale y\n";
+  // A log axis labels decades as 1e-05 ... 10, not gnuplot's default 0.000010 ... 10.000000.
+  if (p.logx) gp += "set logscale x\nset format x '%g'\n";
+  if (p.logy) gp += "set logscale y\nset format y '%g'\n";
   gp += (plot_cmd.empty() ? "# nothing to plot" : plot_cmd) + "\n";
   write_file_atomic((src / (stem + ".dat")).string(), dat);
   write_file_atomic((src / (stem + ".gp")).string(), gp);
@@ -199,8 +212,7 @@ PlotResult render_plot(const Plot& p, const std::string& out_dir, const std::str
 
 std::string render_script(const std::string& gnuplot, const std::string& out_dir,
                           const std::string& stem, const std::string& png) {
-  if (gnuplot.empty() || gnuplot.ends_with("-NOTFOUND") || access(gnuplot.c_str(), X_OK) != 0)
-    return "gnuplot not available" + (gnuplot.empty() ? std::string() : " at " + gnuplot);
+  if (std::string missing = gnuplot_missing(gnuplot); !missing.empty()) return missing;
   const fs::path src = fs::path(out_dir) / "plots_src";
   const std::string tmp_name = temporary_name(png);  // sibling of the final PNG in out_dir
   const fs::path tmp = fs::path(out_dir) / tmp_name;
@@ -218,4 +230,4 @@ std::string render_script(const std::string& gnuplot, const std::string& out_dir
   return "";
 }
 
-}  // namespace kolsky::harness
+}  // namespace kolsky::plot
