@@ -77,8 +77,21 @@ FaceForces DemSpecimen::forces(const FaceState& faces) {
   return {f.front - forces_0_.front, f.back - forces_0_.back};
 }
 
+void DemSpecimen::enable_breakage(const BreakageParams& p, std::uint64_t seed, int check_interval) {
+  if (check_interval < 1) throw InputError("", "specimen.breakage.check_interval", "must be >= 1");
+  breakage_ = start_breakage(p, seed, sys_.particles());
+  check_interval_ = check_interval;
+}
+
 void DemSpecimen::advance(double dt) {
   if (held_) return;
+  // Breaks happen here, between the forces of t^n (just evaluated by forces()) and the step
+  // from t^n: the bars have the face forces of t^n already; the daughters' forces enter the
+  // half kick of this step (DemSystem::edit re-evaluates them).
+  if (breakage_ && ++steps_since_check_ >= check_interval_) {
+    steps_since_check_ = 0;
+    apply_breaks(sys_, *breakage_, find_breaks(sys_, *breakage_));
+  }
   sys_.begin_step(dt);
   stepping_ = true;
 }
@@ -95,7 +108,9 @@ SpecimenEnergy DemSpecimen::energy() const {
                               ? forces_0_.front * faces_.intrusion_front +
                                     forces_0_.back * faces_.intrusion_back
                               : 0.0;
-  return {e.kinetic, e.elastic - elastic_0_ + e.dissipated - supports};
+  // Edits (breakage) took e.edited out: kept in the internal work so that the ledger still
+  // changes by exactly the faces' work (docs/breakage.md, "Energy").
+  return {e.kinetic, e.elastic - elastic_0_ + e.dissipated + e.edited - supports};
 }
 
 double DemSpecimen::mean_strain() const {

@@ -9,6 +9,7 @@
 #include <optional>
 
 #include "core/specimen_coupling.hpp"
+#include "dem/breakage_engine.hpp"
 #include "dem/dem_system.hpp"
 
 namespace kolsky::dem {
@@ -67,6 +68,14 @@ class DemSpecimen {
   FaceState faces_at_release() const { return release_faces_; }
 
   const DemSystem& system() const { return sys_; }
+
+  /// Turns on particle breakage (Sec. 5.2.3, breakage_engine.hpp): every check_interval steps,
+  /// between two steps, the grains that meet the criteria are replaced by their daughters.
+  /// The system must have been built with DemOptions::smallest_radius_to_come covering the
+  /// daughters (make_dem_specimen does). Throws InputError for bad parameters.
+  void enable_breakage(const BreakageParams& p, std::uint64_t seed, int check_interval);
+  /// The breakage state (nullptr without breakage).
+  const BreakageState* breakage() const { return breakage_ ? &*breakage_ : nullptr; }
   int front_plane() const { return front_; }
   int back_plane() const { return back_; }
 
@@ -91,6 +100,9 @@ class DemSpecimen {
   FaceState release_faces_;
   FaceState held_faces_;    // faces at the last held call
   double held_work_ = 0;    // work of the faces on the held specimen, J
+  std::optional<BreakageState> breakage_;
+  int check_interval_ = 1;
+  long steps_since_check_ = 0;
 };
 
 }  // namespace kolsky::dem

@@ -29,8 +29,21 @@ DemSpecimen make_dem_specimen(const DemSpecimenParams& p) {
     walls.length = p.packing.length;
     walls.radius = 0.5 * p.packing.diameter;
     std::vector<Material> materials{p.packing.material};
-    return DemSpecimen(std::move(packed.particles), materials,
-                       make_contact_law(materials, p.contact), walls, p.options);
+    DemOptions options = p.options;
+    if (p.breakage) {
+      // Eq. 5.13 is a Hertz contact-pressure criterion: it needs the Hertz contact of the grains.
+      if (!std::holds_alternative<HertzMindlinParams>(p.contact))
+        throw InputError("", "specimen.breakage", "needs specimen.contact_law = hertz_mindlin (Eq. 5.13 "
+                                                  "is a criterion on the Hertz contact pressure)");
+      validate(*p.breakage);
+      // The step is fixed up front for the smallest daughter the comminution limit allows.
+      options.smallest_radius_to_come = smallest_radius_to_come(*p.breakage, packed.particles);
+    }
+    const std::uint64_t seed = p.packing.seed;
+    DemSpecimen specimen(std::move(packed.particles), materials, make_contact_law(materials, p.contact), walls,
+                         options);
+    if (p.breakage) specimen.enable_breakage(*p.breakage, seed, p.breakage_check_interval);
+    return specimen;
   } catch (const InputError& e) {
     throw rename_input_error(e, p.input_names);
   }

@@ -4,6 +4,7 @@
 // LS-DYNA's linear DES law, Eqs. 3.1-3.4 / Table 3.2), the walls and the integrator options
 // (rolling retardation, Eqs. 4.12-4.14), and the caller's names of these inputs for errors.
 #pragma once
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -31,6 +32,10 @@ struct DemSpecimenParams {
   SpecimenWalls walls;            ///< end planes and tube (length/radius follow the packing)
   DemOptions options;             ///< rolling retardation, skin, dt safety
   std::string packing_cache;      ///< cache directory (packing_cache.hpp); "" = none
+  /// Particle breakage (Sec. 5.2.3; docs/breakage.md); none: no grain ever breaks, and the
+  /// specimen is bitwise what it was before breakage existed. Needs the Hertz-Mindlin law.
+  std::optional<BreakageParams> breakage;
+  int breakage_check_interval = 1;  ///< steps between breakage checks (>= 1)
   std::vector<InputName> input_names;  ///< for errors while building (empty: physics names)
 };
 

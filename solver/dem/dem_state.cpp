@@ -149,7 +149,28 @@ void DemSystem::restore_state(const DemState& s) {
 }
 
 DemSpecimenState DemSpecimen::save_state() const {
-  return {sys_.save_state(), faces_, stepping_, elastic_0_, held_, held_work_};
+  DemSpecimenState s{sys_.save_state(), faces_, stepping_, elastic_0_, held_, held_work_, std::nullopt};
+  if (breakage_) {
+    const BreakageState& b = *breakage_;
+    DemBreakageState out;
+    out.id = b.id;
+    out.strength = b.strength;
+    out.generation.assign(b.generation.begin(), b.generation.end());
+    out.n_primary = b.ledger.n_primary;
+    out.n_secondary = b.ledger.n_secondary;
+    out.lost_volume = b.ledger.lost_volume;
+    for (const psd::FractalFines& f : b.ledger.fines) {
+      out.fines_volume.push_back(f.volume);
+      out.fines_d_min.push_back(f.d_min);
+      out.fines_d_max.push_back(f.d_max);
+      out.fines_alpha.push_back(f.alpha);
+    }
+    out.kinetic_removed = b.kinetic_removed;
+    out.insertion_energy = b.insertion_energy;
+    out.steps_since_check = steps_since_check_;
+    s.breakage = std::move(out);
+  }
+  return s;
 }
 
 void DemSpecimen::restore_state(const DemSpecimenState& s) {
@@ -160,6 +181,27 @@ void DemSpecimen::restore_state(const DemSpecimenState& s) {
   held_ = s.held;
   held_work_ = s.held_work;
   held_faces_ = s.faces;  // while held, the faces of the last forces() call
+  if (s.breakage.has_value() != breakage_.has_value())
+    throw InputError("", "dem.state.breakage", breakage_ ? "the checkpoint has no breakage state, the scene has breakage"
+                                                         : "the checkpoint has breakage, the scene has none");
+  if (!breakage_) return;
+  const DemBreakageState& in = *s.breakage;
+  const std::size_t n = s.system.particles.size();
+  if (in.id.size() != n || in.strength.size() != n || in.generation.size() != n)
+    throw InputError("", "dem.state.breakage", "per-grain arrays do not match the particle count");
+  BreakageState& b = *breakage_;
+  b.id = in.id;
+  b.strength = in.strength;
+  b.generation.assign(in.generation.begin(), in.generation.end());
+  b.ledger.n_primary = in.n_primary;
+  b.ledger.n_secondary = in.n_secondary;
+  b.ledger.lost_volume = in.lost_volume;
+  b.ledger.fines.clear();
+  for (std::size_t k = 0; k < in.fines_volume.size(); ++k)
+    b.ledger.fines.push_back({in.fines_volume[k], in.fines_d_min[k], in.fines_d_max[k], in.fines_alpha[k]});
+  b.kinetic_removed = in.kinetic_removed;
+  b.insertion_energy = in.insertion_energy;
+  steps_since_check_ = in.steps_since_check;
 }
 
 }  // namespace kolsky::dem

@@ -15,6 +15,8 @@
 // (energy().elastic's contact part, n_contacts(), n_wall_contacts()) read zero.
 #pragma once
 #include <cstddef>
+#include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "core/specimen_coupling.hpp"
@@ -55,6 +57,20 @@ struct DemState {
   std::vector<Tube> tubes;
 };
 
+/// What breakage adds to a specimen's state (breakage_engine.hpp): the per-grain arrays, the
+/// ledger and the check counter. The parameters, seed, d50 and initial curve are not stored:
+/// the specimen a run restores into is rebuilt from the same scene and has them.
+struct DemBreakageState {
+  std::vector<std::uint64_t> id;
+  std::vector<double> strength;
+  std::vector<int> generation;
+  std::uint64_t n_primary = 0, n_secondary = 0;
+  double lost_volume = 0;
+  std::vector<double> fines_volume, fines_d_min, fines_d_max, fines_alpha;
+  double kinetic_removed = 0, insertion_energy = 0;
+  long steps_since_check = 0;
+};
+
 /// DemSpecimen = DemSystem + the last face state, whether a step is in progress, and the
 /// elastic energy at construction (the reference of energy().internal_work).
 struct DemSpecimenState {
@@ -64,6 +80,7 @@ struct DemSpecimenState {
   double elastic_0 = 0;
   bool held = false;  ///< SpecimenWalls::hold_until_loaded still holding
   double held_work = 0;  ///< work of the faces on the held specimen, J
+  std::optional<DemBreakageState> breakage;  ///< none: a specimen without breakage
 };
 
 }  // namespace kolsky::dem

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <limits>
 #include <sstream>
 
@@ -44,6 +45,8 @@ DemSystem::DemSystem(Particles particles, std::vector<Material> materials, Conta
   if (!(opt_.skin_over_min_radius > 0))
     throw InputError("", "dem.skin_over_min_radius", "must be > 0");
   if (!(opt_.owner_block > 0)) throw InputError("", "dem.owner_block", "must be > 0");
+  if (!(opt_.smallest_radius_to_come >= 0))
+    throw InputError("", "dem.smallest_radius_to_come", "must be >= 0");
   const double k = opt_.rolling.factor_per_reference_step;
   if (!(k >= 0 && k <= 1)) throw InputError("", "dem.rolling.factor", "must be in [0, 1]");
   if (!(opt_.rolling.reference_dt > 0))
@@ -121,6 +124,11 @@ double DemSystem::compute_stable_dt() const {
     r_max = std::max(r_max, p_.radius[i]);
     rayleigh = std::min(rayleigh, rayleigh_time_step(p_.radius[i], materials_[p_.material[i]]));
   }
+  if (const double r = opt_.smallest_radius_to_come; r > 0)
+    for (const Material& m : materials_) {
+      m_min = std::min(m_min, 4.0 / 3.0 * std::numbers::pi * r * r * r * m.density);
+      rayleigh = std::min(rayleigh, rayleigh_time_step(r, m));
+    }
   // Every law, of the grains and of each wall, states its own limit through the same member,
   // stable_dt(LawLimits) (contact_law.hpp): the Rayleigh step for a Hertz law (Li et al.
   // 2005), sqrt(m/k)(sqrt(1 + zeta^2) - zeta) of its stiffest spring on the lightest grain for

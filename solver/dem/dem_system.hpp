@@ -49,6 +49,10 @@ struct DemOptions {
   /// A re-sort changes each grain's summation order (results move by round-off, not physics).
   /// 0: never. Without edits it never fires.
   double resort_added_fraction = 0.1;
+  /// Smallest grain radius a run may create (m; breakage daughters, Sec. 5.2.3): stable_dt()
+  /// covers a grain of this radius of every material from the start, so the step fixed when
+  /// the run is planned stays stable as grains break (docs/breakage.md). 0: the grains present.
+  double smallest_radius_to_come = 0.0;
 };
 
 /// The fraction of stable_dt() at which kolsky's own DEM loops step (packing, pre-stress,
@@ -85,6 +89,18 @@ struct DemEnergy {
   /// stored in their contacts, minus the added grains' kinetic and contact energy (J). So
   /// kinetic + elastic + dissipated + edited - wall_work stays conserved across edits.
   double edited = 0;
+};
+
+/// A touching contact of the current state, as models that act between steps read it
+/// (breakage, Sec. 5.2.3): grain i and its partner grain j (i < j by pair order), or a wall
+/// (j = -1, wall_slot by the WallSlots rule).
+struct TouchingContact {
+  int i = 0;
+  int j = -1;
+  int wall_slot = -1;
+  Vec3 normal;             ///< unit, from grain i towards the partner (or the wall)
+  double overlap = 0;      ///< m, > 0
+  double wall_force = 0;   ///< normal force of a wall contact (N); 0 for a pair
 };
 
 class DemSystem {
@@ -152,6 +168,10 @@ class DemSystem {
   double cylinder_displacement(int k) const { return tubes_[k].u; }
 
   DemEnergy energy() const;
+  /// Every touching contact of the last force evaluation, pairs first (in pair order), then
+  /// wall contacts (in slot, particle order): one serial pass over the contact flags the sweep
+  /// wrote (dem_contacts.cpp). Empty between an edit or restore and the next evaluation.
+  std::vector<TouchingContact> touching_contacts() const;
   std::size_t n_pairs() const { return pairs_.size(); }
   std::size_t n_contacts() const;       ///< touching grain pairs
   std::size_t n_wall_contacts() const;  ///< touching grain-wall contacts

@@ -82,6 +82,45 @@ void put_ints(hid_t g, const char* name, const std::vector<int>& v) {
   h5::write_ints(g, name, std::vector<std::int64_t>(v.begin(), v.end()));
 }
 
+// Breakage state in its own group "breakage" of the specimen (absent: no breakage).
+void put_breakage(hid_t parent, const dem::DemBreakageState& b) {
+  Handle g = h5::create_group(parent, "breakage");
+  h5::write_ints(g.get(), "id", std::vector<std::int64_t>(b.id.begin(), b.id.end()));  // bits kept
+  h5::write_doubles(g.get(), "strength", b.strength);
+  put_ints(g.get(), "generation", b.generation);
+  h5::write_attr(g.get(), "n_primary", static_cast<std::int64_t>(b.n_primary));
+  h5::write_attr(g.get(), "n_secondary", static_cast<std::int64_t>(b.n_secondary));
+  h5::write_attr(g.get(), "lost_volume", b.lost_volume);
+  for (const auto& [name, v] : {std::pair{"fines_volume", &b.fines_volume}, std::pair{"fines_d_min", &b.fines_d_min},
+                                std::pair{"fines_d_max", &b.fines_d_max}, std::pair{"fines_alpha", &b.fines_alpha}})
+    h5::write_doubles(g.get(), name, *v);
+  h5::write_attr(g.get(), "kinetic_removed", b.kinetic_removed);
+  h5::write_attr(g.get(), "insertion_energy", b.insertion_energy);
+  h5::write_attr(g.get(), "steps_since_check", static_cast<std::int64_t>(b.steps_since_check));
+}
+
+dem::DemBreakageState get_breakage(hid_t parent) {
+  Handle g = h5::open_group(parent, "breakage");
+  dem::DemBreakageState b;
+  for (std::int64_t v : h5::read_ints(g.get(), "id")) b.id.push_back(static_cast<std::uint64_t>(v));
+  b.strength = h5::read_doubles(g.get(), "strength");
+  for (std::int64_t v : h5::read_ints(g.get(), "generation")) b.generation.push_back(static_cast<int>(v));
+  b.n_primary = static_cast<std::uint64_t>(h5::read_attr_int(g.get(), "n_primary"));
+  b.n_secondary = static_cast<std::uint64_t>(h5::read_attr_int(g.get(), "n_secondary"));
+  b.lost_volume = h5::read_attr_double(g.get(), "lost_volume");
+  b.fines_volume = h5::read_doubles(g.get(), "fines_volume");
+  b.fines_d_min = h5::read_doubles(g.get(), "fines_d_min");
+  b.fines_d_max = h5::read_doubles(g.get(), "fines_d_max");
+  b.fines_alpha = h5::read_doubles(g.get(), "fines_alpha");
+  const std::size_t n = b.fines_volume.size();
+  if (b.fines_d_min.size() != n || b.fines_d_max.size() != n || b.fines_alpha.size() != n)
+    throw std::runtime_error("specimen/breakage: fines arrays of different lengths");
+  b.kinetic_removed = h5::read_attr_double(g.get(), "kinetic_removed");
+  b.insertion_energy = h5::read_attr_double(g.get(), "insertion_energy");
+  b.steps_since_check = static_cast<long>(h5::read_attr_int(g.get(), "steps_since_check"));
+  return b;
+}
+
 void put_dem(hid_t g, const dem::DemSpecimenState& s) {
   const dem::DemState& d = s.system;
   for (const auto& [name, p] : dem_vec3s(d)) put_vec3(g, name, *p);
@@ -108,6 +147,7 @@ void put_dem(hid_t g, const dem::DemSpecimenState& s) {
   h5::write_attr(g, "elastic_0", s.elastic_0);
   h5::write_attr(g, "held", std::int64_t{s.held});
   h5::write_attr(g, "held_work", s.held_work);
+  if (s.breakage) put_breakage(g, *s.breakage);
 }
 
 void put_bar(hid_t parent, const char* name, const shpb::BarState& b) {
@@ -208,6 +248,7 @@ dem::DemSpecimenState get_dem(hid_t g) {
   s.elastic_0 = h5::read_attr_double(g, "elastic_0");
   s.held = H5Aexists(g, "held") > 0 && h5::read_attr_int(g, "held") != 0;  // absent: older file
   s.held_work = H5Aexists(g, "held_work") > 0 ? h5::read_attr_double(g, "held_work") : 0.0;
+  if (h5::exists(g, "breakage")) s.breakage = get_breakage(g);
   return s;
 }
 

@@ -76,6 +76,30 @@ dem::DemSpecimenParams read_dem_specimen(JsonReader& r, const std::string& base_
   // Pre-stressed against the test's wall springs (docs/dem.md, Pre-stress).
   d.packing.prestress_wall_normal_stiffness = wall.normal_stiffness;
   d.packing.prestress_wall_shear_stiffness = wall.shear_stiffness;
+  if (r.has("specimen.breakage")) {  // absent: no breakage, and the resolved scene has none
+    const std::string p = "specimen.breakage.";
+    dem::BreakageParams b;
+    b.sigma_lim0 = r.number(p + "sigma_lim0");
+    b.d0 = r.number(p + "d0");
+    b.m1 = r.number(p + "m1");
+    b.var_a = r.number(p + "var_a");
+    b.var_b = r.number(p + "var_b");
+    b.coordination_limit = r.integer(p + "coordination_limit");
+    b.count_wall_contacts = r.boolean(p + "count_wall_contacts");
+    b.comminution_factor = r.number(p + "comminution_factor");
+    b.fines_fractal_dimension = r.number(p + "fines_fractal_dimension");
+    b.fines_d_min = r.number(p + "fines_d_min");
+    d.breakage_check_interval = r.integer(p + "check_interval");
+    try {
+      dem::validate(b);  // the rules between keys (var range, var_a != 0), before any packing
+    } catch (const InputError& e) {
+      r.fail(e.path(), e.rule());
+    }
+    if (!std::holds_alternative<dem::HertzMindlinParams>(d.contact))
+      r.fail("specimen.breakage", "needs specimen.contact_law = hertz_mindlin (Eq. 5.13 is a criterion on the "
+                                  "Hertz contact pressure)");
+    d.breakage = b;
+  }
   d.input_names = dem_input_names(d.contact);
   return d;
 }

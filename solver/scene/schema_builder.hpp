@@ -93,5 +93,7 @@ using VT = ValueType;
 
 /// The DEM specimen's rows (schema_dem.cpp), appended in the order kolsky defaults prints them.
 void add_dem_rows(TableBuilder& s);
+/// The specimen.breakage rows (schema_dem.cpp), used when `applies` holds.
+void add_breakage_rows(TableBuilder& s, const std::string& applies);
 
 }  // namespace kolsky::scene::table

@@ -81,6 +81,39 @@ void add_dem_rows(TableBuilder& s) {
         "Rolling retardation k per 1e-9 s step (Eqs. 4.12-4.14; Sec. 4.3: 0.99999975; 1 = none)",
         dem);
   add_keys(s, wall_keys(), dem);
+  add_breakage_rows(s, dem);
+}
+
+void add_breakage_rows(TableBuilder& s, const std::string& dem) {
+  // Particle breakage (Sec. 5.2.3; docs/breakage.md): used only when the specimen.breakage
+  // object is present; without it no grain breaks.
+  const dem::BreakageParams b;
+  const std::string p = "specimen.breakage.";
+  const Range at_least_one{1.0, kInf, false, false};
+  s.add(VT::number, p + "sigma_lim0", b.sigma_lim0, "Pa", kPositive,
+        "Strength of a d0 grain, Eq. 5.13 (Song N = 2: 2.7e9; Wang 1.53e9 / 2.37e9, Huang 3.6e9, "
+        "Sec. 5.3); grows with the upscaling factor, Eq. 5.17", dem);
+  s.add(VT::number, p + "d0", b.d0, "m", kPositive, "Reference diameter of sigma_lim0 (Sec. 5.2.3: 2 mm)", dem);
+  s.add(VT::number, p + "m1", b.m1, "-", kPositive, "Weibull modulus of the size effect (Sec. 5.2.3: 3, silica)",
+        dem);
+  s.add(VT::number, p + "var_a", b.var_a, "-", kNoRange,
+        "Eq. 5.15 slope a of var = (U - b)/a (Sec. 5.2.3: -1.22); must not be 0", dem);
+  s.add(VT::number, p + "var_b", b.var_b, "-", kNoRange,
+        "Eq. 5.15 intercept b (Sec. 5.2.3: 1.67); var must stay > 0 over U in [0, 1)", dem);
+  s.add(VT::integer, p + "coordination_limit", b.coordination_limit, "-", kNonNegative,
+        "c_lim: only grains with fewer contacts break (Secs. 5.3.1-5.3.3: 8); 0 = no limit "
+        "(targets.md 5e.9)", dem);
+  s.add(VT::boolean, p + "count_wall_contacts", b.count_wall_contacts, "-", kNoRange,
+        "Wall contacts count towards the coordination number (the text leaves it open; "
+        "docs/breakage.md)", dem);
+  s.add(VT::number, p + "comminution_factor", b.comminution_factor, "-", kOpenUnit,
+        "Grains below this x d50 of the initial grains never break (Sec. 5.2.3: 0.22)", dem);
+  s.add(VT::number, p + "fines_fractal_dimension", b.fines_fractal_dimension, "-", kPositive,
+        "alpha of Eq. 5.16 for the lost mass (Sec. 5.2.3: 2.6)", dem);
+  s.add(VT::number, p + "fines_d_min", b.fines_d_min, "m", kPositive,
+        "d_min of Eq. 5.16, the smallest size of the fines (Wang: 7.5e-6)", dem);
+  s.add(VT::integer, p + "check_interval", dem::DemSpecimenParams{}.breakage_check_interval, "-", at_least_one,
+        "Steps between breakage checks (1: every step; docs/breakage.md)", dem);
 }
 
 }  // namespace kolsky::scene::table

@@ -18,6 +18,22 @@ void add_model_probes(const dem::DemSpecimen& d, ProbeRecords& out) {
   out.push_back({"grain_contacts", "1", "touching grain pairs", [=](double) { return pairs(); }});
   out.push_back({"wall_contacts", "1", "touching grain-wall contacts (end planes and tube)",
                  [=](double) { return walls(); }});
+  if (d.breakage() == nullptr) return;  // the probes of a specimen without breakage stay as they were
+  const dem::DemSpecimen* s = &d;
+  auto ledger = [s]() -> const dem::BreakageLedger& { return s->breakage()->ledger; };
+  out.push_back({"grain_count", "1", "grains in the simulation (each break: -1 + 14)", [=](double) { return grains(); }});
+  out.push_back({"broken_primary", "1", "grains of the initial specimen broken (Sec. 5.3.2)",
+                 [=](double) { return static_cast<double>(ledger().n_primary); }});
+  out.push_back({"broken_secondary", "1", "daughters broken again (secondary breakage, Sec. 5.3.2)",
+                 [=](double) { return static_cast<double>(ledger().n_secondary); }});
+  out.push_back({"lost_volume", "m^3", "solid volume removed as fines (46.6 % of each parent, Table 5.3)",
+                 [=](double) { return ledger().lost_volume; }});
+  out.push_back({"relative_breakage", "1", "Hardin's B_r of grains + fines against the initial grains (75 um, Sec. 5.3.1)",
+                 [s, sys](double) { return dem::relative_breakage(*s->breakage(), sys->particles()); }});
+  out.push_back({"breakage_kinetic_removed", "J", "kinetic energy that left with the lost mass",
+                 [s](double) { return s->breakage()->kinetic_removed; }});
+  out.push_back({"breakage_insertion_energy", "J", "change of contact energy when daughters replace parents",
+                 [s](double) { return s->breakage()->insertion_energy; }});
 }
 
 }  // namespace kolsky::shpb

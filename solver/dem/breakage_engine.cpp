@@ -1,0 +1,174 @@
+#include "dem/breakage_engine.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numeric>
+
+#include "dem/apollonian.hpp"
+
+namespace kolsky::dem {
+
+namespace {
+
+constexpr double kHardinThreshold = 75e-6;  // m, Sec. 5.3.1 (Hardin's No. 200 sieve)
+constexpr int kCurvePoints = 64;            // log-spaced rows of the tracked curves
+
+std::vector<double> diameters(const Particles& p) {
+  std::vector<double> d(p.size());
+  for (std::size_t i = 0; i < p.size(); ++i) d[i] = 2.0 * p.radius[i];
+  return d;
+}
+
+// Rows from d_min of the fines to the largest grain, log-spaced, with the Hardin threshold.
+std::vector<double> curve_sizes(const BreakageParams& p, const Particles& grains) {
+  const double lo = p.fines_d_min;
+  const double hi = 2.0 * *std::max_element(grains.radius.begin(), grains.radius.end());
+  std::vector<double> s;
+  for (int k = 0; k < kCurvePoints; ++k)
+    s.push_back(lo * std::pow(hi / lo, static_cast<double>(k) / (kCurvePoints - 1)));
+  s.back() = hi;
+  if (kHardinThreshold > lo && kHardinThreshold < hi) s.push_back(kHardinThreshold);
+  std::sort(s.begin(), s.end());
+  s.erase(std::unique(s.begin(), s.end()), s.end());
+  return s;
+}
+
+template <class T>
+std::vector<T> realigned(const std::vector<T>& old, const EditMap& m, std::size_t n_new,
+                         const std::vector<T>& added) {
+  std::vector<T> out(n_new);
+  for (std::size_t i = 0; i < old.size(); ++i)
+    if (m.old_to_new[i] >= 0) out[static_cast<std::size_t>(m.old_to_new[i])] = old[i];
+  for (std::size_t k = 0; k < added.size(); ++k) out[static_cast<std::size_t>(m.added_at[k])] = added[k];
+  return out;
+}
+
+double kinetic(const Particles& p, std::size_t i) {
+  return 0.5 * p.mass[i] * dot(p.v[i], p.v[i]) + 0.5 * p.inertia[i] * dot(p.omega[i], p.omega[i]);
+}
+
+}  // namespace
+
+double mass_d50(const Particles& p) {
+  std::vector<std::size_t> order(p.size());
+  std::iota(order.begin(), order.end(), std::size_t{0});
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return p.radius[a] < p.radius[b]; });
+  double total = 0.0;
+  for (double r : p.radius) total += r * r * r;
+  double sum = 0.0;
+  for (std::size_t i : order) {
+    sum += p.radius[i] * p.radius[i] * p.radius[i];
+    if (sum >= 0.5 * total) return 2.0 * p.radius[i];
+  }
+  return 0.0;
+}
+
+double smallest_radius_to_come(const BreakageParams& p, const Particles& grains) {
+  return 0.5 * smallest_daughter_diameter(p, mass_d50(grains));
+}
+
+BreakageState start_breakage(const BreakageParams& p, std::uint64_t seed, const Particles& grains) {
+  validate(p);
+  BreakageState s;
+  s.params = p;
+  s.seed = seed;
+  s.d50_initial = mass_d50(grains);
+  validate_against_d50(p, s.d50_initial);
+  for (std::size_t i = 0; i < grains.size(); ++i) {
+    s.id.push_back(i);
+    s.strength.push_back(strength_limit(p, 2.0 * grains.radius[i], strength_variability(p, seed, i)));
+    s.generation.push_back(0);
+  }
+  s.sizes = curve_sizes(p, grains);
+  s.initial_curve = current_curve(s.ledger, diameters(grains), s.sizes);
+  return s;
+}
+
+std::vector<BreakEvent> find_breaks(const DemSystem& sys, const BreakageState& s) {
+  const Particles& p = sys.particles();
+  const auto& mat = sys.materials();
+  const std::size_t n = p.size();
+  std::vector<double> ratio(n, 0.0), largest(n, 0.0);
+  std::vector<Vec3> axis(n);
+  std::vector<int> grain_contacts(n, 0), wall_contacts(n, 0);
+  auto consider = [&](int g, double force, double r_eff, double e_eff, const Vec3& direction) {
+    const auto k = static_cast<std::size_t>(g);
+    ratio[k] = std::max(ratio[k], force / critical_force(s.strength[k], r_eff, e_eff));
+    if (force > largest[k]) largest[k] = force, axis[k] = direction;
+  };
+  const double rigid = std::numeric_limits<double>::infinity();
+  for (const TouchingContact& c : sys.touching_contacts()) {
+    const Material& mi = mat[p.material[c.i]];
+    if (c.j >= 0) {
+      const Material& mj = mat[p.material[c.j]];
+      const double r_eff = effective_radius(p.radius[c.i], p.radius[c.j]);
+      const double e_eff = effective_modulus(mi.youngs_modulus, mi.poisson_ratio, mj.youngs_modulus, mj.poisson_ratio);
+      const double force = 4.0 / 3.0 * e_eff * std::sqrt(r_eff) * c.overlap * std::sqrt(c.overlap);
+      consider(c.i, force, r_eff, e_eff, c.normal);
+      consider(c.j, force, r_eff, e_eff, -c.normal);
+      ++grain_contacts[c.i];
+      ++grain_contacts[c.j];
+    } else {
+      consider(c.i, c.wall_force, p.radius[c.i], effective_modulus(mi.youngs_modulus, mi.poisson_ratio, rigid, 0.0),
+               c.normal);
+      ++wall_contacts[c.i];
+    }
+  }
+  std::vector<BreakEvent> events;
+  for (std::size_t g = 0; g < n; ++g) {
+    if (!(ratio[g] >= 1.0)) continue;
+    const int coordination = counted_coordination(s.params, grain_contacts[g], wall_contacts[g]);
+    if (may_break(s.params, 2.0 * p.radius[g], s.d50_initial, coordination))
+      events.push_back({static_cast<int>(g), axis[g]});
+  }
+  return events;
+}
+
+std::size_t apply_breaks(DemSystem& sys, BreakageState& s, const std::vector<BreakEvent>& events) {
+  if (events.empty()) return 0;
+  const Particles& p = sys.particles();
+  ParticleEdit edit;
+  std::vector<std::uint64_t> ids;
+  std::vector<double> strengths;
+  std::vector<unsigned char> generations;
+  double kinetic_parents = 0.0;
+  for (const BreakEvent& e : events) {
+    const auto g = static_cast<std::size_t>(e.grain);
+    edit.removed.push_back(e.grain);
+    kinetic_parents += kinetic(p, g);
+    const auto daughters =
+        place_daughters(p.x[g], p.radius[g], e.axis, replacement_spin_angle(s.seed, s.id[g]));
+    for (unsigned k = 0; k < daughters.size(); ++k) {
+      edit.added.add(daughters[k].centre, daughters[k].radius, p.material[g], sys.materials(),
+                     daughter_velocity(p.v[g]), p.omega[g]);
+      const std::uint64_t id = daughter_id(s.id[g], k);
+      ids.push_back(id);
+      strengths.push_back(strength_limit(s.params, 2.0 * daughters[k].radius, strength_variability(s.params, s.seed, id)));
+      generations.push_back(static_cast<unsigned char>(std::min(254, s.generation[g] + 1)));
+    }
+    record_break(s.ledger, s.params, p.radius[g], s.generation[g]);
+  }
+  double kinetic_daughters = 0.0;
+  for (std::size_t k = 0; k < edit.added.size(); ++k) kinetic_daughters += kinetic(edit.added, k);
+  const double edited_before = sys.energy().edited;
+  const EditMap map = sys.edit(edit);
+  const std::size_t n_new = sys.particles().size();
+  s.id = realigned(s.id, map, n_new, ids);
+  s.strength = realigned(s.strength, map, n_new, strengths);
+  s.generation = realigned(s.generation, map, n_new, generations);
+  const double moved = sys.energy().edited - edited_before;
+  s.kinetic_removed += kinetic_parents - kinetic_daughters;
+  s.insertion_energy += moved - (kinetic_parents - kinetic_daughters);
+  return events.size();
+}
+
+psd::GrainSizeCurve current_grain_size_curve(const BreakageState& s, const Particles& grains) {
+  return current_curve(s.ledger, diameters(grains), s.sizes);
+}
+
+double relative_breakage(const BreakageState& s, const Particles& grains) {
+  return hardin_br(s.initial_curve, current_grain_size_curve(s, grains), kHardinThreshold);
+}
+
+}  // namespace kolsky::dem
