@@ -32,10 +32,6 @@ namespace {
 using test::kBusySand;
 const HertzMindlinParams kHm{0.5, 0.5};
 
-double hertz_force(double e_eff, double r_eff, double overlap) {
-  return 4.0 / 3.0 * e_eff * std::sqrt(r_eff) * overlap * std::sqrt(overlap);
-}
-
 DemSystem pair_at(double r, double overlap, const DemOptions& opt = {}) {
   Particles p;
   p.add({0, 0, 0}, r, 0, kBusySand);
