@@ -54,6 +54,14 @@ void check_range(long begin, long end, std::size_t n, const char* who) {
                                 std::to_string(end) + ")");
 }
 
+/// Eq. 2.15 on every sample, NaN below the floor: a fraction of the record's peak |stress_avg|
+/// (docs/analysis.md, "Alpha floor"). Needs stress_front, stress_back, stress_avg filled.
+void fill_alpha(SpecimenHistory& h, const AnalysisOptions& o) {
+  const double floor = o.alpha_floor_fraction * max_abs(h.stress_avg);
+  h.alpha.resize(h.stress_avg.size());
+  for (std::size_t k = 0; k < h.alpha.size(); ++k)
+    h.alpha[k] = stress_nonuniformity(h.stress_front[k], h.stress_back[k], floor);
+}
 }  // namespace
 
 double AnalysisBar::wave_speed() const { return std::sqrt(youngs_modulus / density); }
@@ -118,10 +126,7 @@ SpecimenHistory analyze(const FaceWaves& w, const AnalysisSetup& s, const Analys
   h.strain = cumulative_trapezoid(h.strain_rate, dt);
   h.strain_three_wave = cumulative_trapezoid(h.strain_rate_three_wave, dt);
 
-  const double floor = o.alpha_floor_fraction * max_abs(h.stress_avg);
-  h.alpha.resize(n);
-  for (std::size_t k = 0; k < n; ++k)
-    h.alpha[k] = stress_nonuniformity(h.stress_front[k], h.stress_back[k], floor);  // Eq. 2.15
+  fill_alpha(h, o);
 
   // Eqs. 2.11-2.13: incident and reflected waves in the incident bar, transmitted in the other.
   const AnalysisBar& bi = s.incident;
@@ -138,6 +143,26 @@ SpecimenHistory analyze(const FaceWaves& w, const AnalysisSetup& s, const Analys
   return h;
 }
 
+SpecimenHistory analyze_faces(const std::vector<double>& t, const std::vector<double>& strain,
+                              const std::vector<double>& strain_rate,
+                              const std::vector<double>& stress_front,
+                              const std::vector<double>& stress_back, const AnalysisOptions& o) {
+  const std::size_t n = t.size();
+  if (strain.size() != n || strain_rate.size() != n || stress_front.size() != n ||
+      stress_back.size() != n)
+    throw std::invalid_argument("analyze_faces: t, strain, strain_rate and stresses must have the same length");
+  SpecimenHistory h;
+  h.t = t;
+  h.strain = strain;
+  h.strain_rate = strain_rate;
+  h.stress_front = stress_front;
+  h.stress_back = stress_back;
+  h.stress_avg.resize(n);
+  for (std::size_t k = 0; k < n; ++k) h.stress_avg[k] = 0.5 * (stress_front[k] + stress_back[k]);  // Eq. 4.16
+  fill_alpha(h, o);
+  return h;
+}
+
 long first_equilibrium_index(const std::vector<double>& alpha, double threshold, long hold) {
   const long need = std::max(hold, 1L);
   long run = 0;
@@ -149,12 +174,10 @@ long first_equilibrium_index(const std::vector<double>& alpha, double threshold,
   return -1;
 }
 
-EquilibriumIndices equilibrium_indices(const FaceWaves& w, const SpecimenHistory& h, long begin,
-                                       long end) {
+EquilibriumIndices equilibrium_indices(const SpecimenHistory& h, long begin, long end) {
   const std::size_t n = h.stress_front.size();
-  if (h.stress_back.size() != n || h.alpha.size() != n || w.eps_i.size() != n ||
-      w.eps_r.size() != n || w.eps_t.size() != n)
-    throw std::invalid_argument("equilibrium_indices: waves and history lengths differ");
+  if (h.stress_back.size() != n || h.alpha.size() != n)
+    throw std::invalid_argument("equilibrium_indices: history lengths differ");
   check_range(begin, end, n, "equilibrium_indices");
 
   // FBC and SEQI exactly as DynaMat-Platform computes them
@@ -170,6 +193,7 @@ EquilibriumIndices equilibrium_indices(const FaceWaves& w, const SpecimenHistory
   double fbc_sum = 0, sq_sum = 0, lo = std::numeric_limits<double>::infinity(), hi = -lo;
   long n_valid = 0;
   EquilibriumIndices r;
+  r.max_strain_difference = nan;
   double alpha_sum = 0;
   long n_alpha = 0;
   for (long k = begin; k < end; ++k) {
@@ -182,9 +206,6 @@ EquilibriumIndices equilibrium_indices(const FaceWaves& w, const SpecimenHistory
       ++n_valid;
     }
     if (std::isfinite(h.alpha[k])) alpha_sum += h.alpha[k], ++n_alpha;
-    // Eq. 1.4 residual in bar strain (SHPB_Processing.py "strain_difference").
-    r.max_strain_difference =
-        std::max(r.max_strain_difference, std::abs(w.eps_i[k] + w.eps_r[k] - w.eps_t[k]));
   }
   if (n_valid > 0) {
     r.force_balance = 1.0 - fbc_sum / static_cast<double>(n_valid);
@@ -197,6 +218,20 @@ EquilibriumIndices equilibrium_indices(const FaceWaves& w, const SpecimenHistory
     r.stress_equilibrium = nan;
   }
   r.mean_alpha = n_alpha > 0 ? alpha_sum / static_cast<double>(n_alpha) : nan;
+  return r;
+}
+
+EquilibriumIndices equilibrium_indices(const FaceWaves& w, const SpecimenHistory& h, long begin,
+                                       long end) {
+  const std::size_t n = h.stress_front.size();
+  if (w.eps_i.size() != n || w.eps_r.size() != n || w.eps_t.size() != n)
+    throw std::invalid_argument("equilibrium_indices: waves and history lengths differ");
+  EquilibriumIndices r = equilibrium_indices(h, begin, end);
+  // Eq. 1.4 residual in bar strain (SHPB_Processing.py "strain_difference").
+  r.max_strain_difference = 0;
+  for (long k = begin; k < end; ++k)
+    r.max_strain_difference =
+        std::max(r.max_strain_difference, std::abs(w.eps_i[k] + w.eps_r[k] - w.eps_t[k]));
   return r;
 }
 

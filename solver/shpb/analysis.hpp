@@ -68,6 +68,18 @@ SpecimenHistory analyze(const FaceWaves& w, const AnalysisSetup& s, const Analys
 /// Eq. 5.1: cumulative trapezoid integral of an applied strain rate (uniform dt).
 std::vector<double> strain_from_strain_rate(const std::vector<double>& rate, double dt);
 
+/// The direct analysis of a test without bar waves (Sec. 5.2.1, methodology 1: strain-rate
+/// controlled walls): strain and strain rate as applied (Eq. 5.1), front and back stresses
+/// as the wall forces over the specimen area, their average (Eq. 4.16) and alpha (Eq. 2.15,
+/// with the floor of `o` relative to the record's peak |stress_avg|, as analyze() does). The
+/// three-wave series and the wave energies stay empty: there are no waves. Any length,
+/// including 0 and 1 (nothing here differentiates or needs a uniform clock); all inputs must
+/// have the length of t (std::invalid_argument otherwise).
+SpecimenHistory analyze_faces(const std::vector<double>& t, const std::vector<double>& strain,
+                              const std::vector<double>& strain_rate,
+                              const std::vector<double>& stress_front,
+                              const std::vector<double>& stress_back, const AnalysisOptions& o = {});
+
 /// Eqs. 2.11-2.13 for one stress series sigma (Pa) in a bar of area A, density rho, speed c:
 /// cumulative W(t) = A/(rho c) * integral sigma^2 dt (trapezoid), J.
 std::vector<double> wave_energy(const std::vector<double>& sigma, double dt, double area,
@@ -91,6 +103,9 @@ struct EquilibriumIndices {
 };
 EquilibriumIndices equilibrium_indices(const FaceWaves& w, const SpecimenHistory& h,
                                        long begin, long end);
+/// The same from the face stresses alone (a direct analysis, analyze_faces): FBC, SEQI and
+/// mean alpha; max_strain_difference is NaN (no waves, no Eq. 1.4 residual).
+EquilibriumIndices equilibrium_indices(const SpecimenHistory& h, long begin, long end);
 
 /// Least-squares slope of y against x over samples [begin, end) (e.g. constrained modulus).
 double fitted_slope(const std::vector<double>& x, const std::vector<double>& y, long begin,
