@@ -8,12 +8,15 @@
 //                           DOFs of core/specimen_coupling.hpp (4 scalars in, 2 out)
 //   (b) MeshedBarsAssembly  meshed FE bars + FE specimen (+ tube) as one FE body (fe::MeshedShpb)
 //   (c) not yet             meshed FE bars + FE tube + DEM specimen: see "Seam (c)" below
+//   (d) StrainRateWallsAssembly  no bars: a DEM specimen between a wall driven by a tabulated
+//                           strain rate and a fixed wall (Sec. 5.2.1, methodology 1), through
+//                           the same face interface; chosen by spec.strain_rate
 //
 // Every alternative provides (SimulatedShpb visits the variant once per run and runs the
 // loop on the concrete type, so the per-step path has no dispatch of its own):
 //   explicit A(const ExperimentSpec&)      builds what it steps; throws InputError (no path)
 //   double stable_dt() const               s
-//   double arrival_time() const            incident wave at the specimen face, s
+//   double arrival_time() const            incident wave at the specimen face, s (0 for (d))
 //   void step(long n, double t, double dt, const RunControl&)   t^n -> t^{n+1}
 //   void observe(double t)                 output step: checks, throws NumericalError
 //   ProbeRecords probes() const            named records; samplers read *this
@@ -38,14 +41,17 @@
 #include "shpb/experiment.hpp"
 #include "shpb/meshed_bars.hpp"
 #include "shpb/one_dim_bars.hpp"
+#include "shpb/strain_rate_walls.hpp"
 
 namespace kolsky::shpb {
 
-using ShpbAssembly = std::variant<OneDimBarsAssembly, MeshedBarsAssembly>;
+using ShpbAssembly = std::variant<OneDimBarsAssembly, MeshedBarsAssembly, StrainRateWallsAssembly>;
 
-/// The alternative spec.bar_kind and spec.specimen ask for, built in place (no copy of the
-/// bodies). Throws InputError (no file; paths "bars.kind", "fe.*", "specimen.*", ...).
+/// The alternative spec.strain_rate, spec.bar_kind and spec.specimen ask for, built in place
+/// (no copy of the bodies). Throws InputError (no file; paths "bars.kind", "fe.*",
+/// "specimen.*", ...).
 inline ShpbAssembly make_assembly(const ExperimentSpec& spec) {
+  if (spec.strain_rate) return ShpbAssembly(std::in_place_type<StrainRateWallsAssembly>, spec);
   if (spec.bar_kind == BarKind::meshed) return ShpbAssembly(std::in_place_type<MeshedBarsAssembly>, spec);
   return ShpbAssembly(std::in_place_type<OneDimBarsAssembly>, spec);
 }

@@ -101,7 +101,8 @@ std::vector<Probe> SimulatedShpb::declared_probes() const {
 const OneDimBarsAssembly& SimulatedShpb::one_dim(const char* accessor) const {
   if (const auto* a = std::get_if<OneDimBarsAssembly>(&assembly_)) return *a;
   throw std::logic_error(std::string("SimulatedShpb::") + accessor +
-                         ": meshed bars build no 1-D bar or specimen (see assembly())");
+                         ": this assembly (meshed bars or strain-rate walls) builds no 1-D bar "
+                         "or specimen variant (see assembly())");
 }
 
 const Specimen& SimulatedShpb::specimen() const { return one_dim("specimen()").specimen(); }
@@ -113,9 +114,12 @@ void SimulatedShpb::require_analysable_end() const {
   const double needed = arrival_time() + 2.0 * schedule_.dt * schedule_.sample_every;
   if (spec_.time.end_time >= needed) return;
   std::ostringstream msg;
-  msg << std::setprecision(4) << "must be at least " << needed
-      << " s: the incident wave reaches the specimen at L_I / c_I = " << arrival_time()
-      << " s, and the analysis needs two probe samples after that";
+  msg << std::setprecision(4) << "must be at least " << needed << " s: ";
+  if (direct_analysis())
+    msg << "the analysis needs two probe samples";
+  else
+    msg << "the incident wave reaches the specimen at L_I / c_I = " << arrival_time()
+        << " s, and the analysis needs two probe samples after that";
   throw InputError("", "time.end", msg.str());
 }
 
@@ -135,6 +139,23 @@ AnalysisSetup SimulatedShpb::analysis_setup() const {
   s.specimen_length = specimen_length(spec_.specimen);
   s.specimen_diameter = specimen_diameter(spec_.specimen);
   return s;
+}
+
+bool SimulatedShpb::direct_analysis() const {
+  return std::holds_alternative<StrainRateWallsAssembly>(assembly_);
+}
+
+RunAnalysis SimulatedShpb::analyse(const RunResult& r) const {
+  RunAnalysis a;
+  if (direct_analysis()) {  // Sec. 5.2.1: stresses from the wall forces, strain from Eq. 5.1
+    a.history = analyze_faces(r.t, r.probe("specimen_strain").value, r.probe("strain_rate").value,
+                              r.probe("stress_front").value, r.probe("stress_back").value);
+    return a;
+  }
+  const AnalysisSetup setup = analysis_setup();
+  a.waves = r.face_waves(setup.incident.youngs_modulus, setup.transmission.youngs_modulus);
+  a.history = analyze(a.waves, setup);
+  return a;
 }
 
 RunResult SimulatedShpb::run(Progress* progress, const RunControl& control) {

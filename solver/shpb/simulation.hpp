@@ -1,7 +1,8 @@
-// The simulated SHPB test: an assembly (shpb/assembly.hpp: 1-D bars + specimen model, or
-// meshed bars + FE specimen) chosen once from the ExperimentSpec, advanced by the one explicit
-// loop (time/explicit_loop.hpp), sampled into named probes at the output cadence, and the
-// face-referred waves the classic analysis consumes.
+// The simulated SHPB test: an assembly (shpb/assembly.hpp: 1-D bars + specimen model, meshed
+// bars + FE specimen, or strain-rate walls + DEM specimen) chosen once from the ExperimentSpec,
+// advanced by the one explicit loop (time/explicit_loop.hpp), sampled into named probes at the
+// output cadence, and the analysis of a finished run (analyse: the face-referred waves the
+// classic analysis consumes, or the walls' stresses directly).
 //   Who owns what: SimulatedShpb owns the spec, the schedule (dt, steps, cadence) and the
 //   assembly; the assembly owns the bodies it steps, its energy ledger and its probe records;
 //   run() owns the RunResult it fills.
@@ -28,8 +29,10 @@
 namespace kolsky::shpb {
 
 /// The loop's state after step next_step - 1 (and its sample): resume with step next_step.
-/// The bar, specimen and accumulator fields are those of OneDimBarsAssembly, the only
-/// assembly that checkpoints (io/checkpoint_hdf5 writes them).
+/// The bar, specimen and accumulator fields are those of OneDimBarsAssembly (io/checkpoint_hdf5
+/// writes them). StrainRateWallsAssembly, the other assembly that checkpoints, fills specimen
+/// (DEM) and forces, keeps its wall work in w_i and the gross wall work (its energy scale) in
+/// injected, and leaves the bar states empty.
 struct ShpbState {
   long next_step = 0;
   RunResult partial;  ///< t, probes, steps, dt recorded so far
@@ -37,6 +40,14 @@ struct ShpbState {
   SpecimenState specimen;
   FaceForces forces;
   double w_i = 0, w_r = 0, w_t = 0, prev[3] = {0, 0, 0}, injected = 0;
+};
+
+/// What SimulatedShpb::analyse returns: the face waves (empty for a direct analysis) and the
+/// specimen history on their clock (t = 0 at the incident arrival; for strain-rate walls the
+/// run's own clock).
+struct RunAnalysis {
+  FaceWaves waves;
+  SpecimenHistory history;
 };
 
 class SimulatedShpb {
@@ -55,15 +66,25 @@ class SimulatedShpb {
   /// long-wave speed over its N - 1 contacts).
   double arrival_time() const;
   /// Throws InputError("", "time.end", ...) when the run ends before the classic analysis has
-  /// two probe samples after the incident wave's arrival.
+  /// two probe samples after the incident wave's arrival (strain-rate walls: after t = 0).
   void require_analysable_end() const;
+  /// Bars and specimen as the wave analysis sees them (the default bars for strain-rate walls,
+  /// which analyse() does not use).
   AnalysisSetup analysis_setup() const;
+  /// A finished run's analysis: for bar assemblies, the classic analysis of the face waves
+  /// (RunResult::face_waves, analyze); for strain-rate walls the direct one of the face
+  /// stresses (analyze_faces; waves empty, no wave energies). std::invalid_argument from the
+  /// wave analysis when fewer than 2 wave samples exist (a run stopped before the arrival).
+  RunAnalysis analyse(const RunResult& r) const;
+  /// Whether the run is analysed without waves (strain-rate walls: no bars, no gauges).
+  bool direct_analysis() const;
   /// The probes run() records, in its order (the HDF5 order), with empty values.
   std::vector<Probe> declared_probes() const;
 
   const ShpbAssembly& assembly() const { return assembly_; }
-  /// The 1-D assembly's specimen and bars. Meshed bars have none: these throw std::logic_error
-  /// there (use assembly() and MeshedBarsAssembly::body()).
+  /// The 1-D assembly's specimen and bars. Meshed bars and strain-rate walls have none: these
+  /// throw std::logic_error there (use assembly(), MeshedBarsAssembly::body(),
+  /// StrainRateWallsAssembly::specimen()).
   const Specimen& specimen() const;
   const Bar& incident_bar() const;
   const Bar& transmission_bar() const;
