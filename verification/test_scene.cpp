@@ -63,6 +63,7 @@ class SceneTest : public ::testing::Test {
     write("pulse.csv", "# reconstructed pulse\ntime_s,stress_pa\n0 0\n1e-4 1e8\n2e-4 0\n");
     write("curve.csv", "strain,stress_pa\n0,0\n0.05,20e6\n0.1,100e6\n");
     write("psd.csv", "diameter_m,percent_passing\n1e-4,0\n3e-4,50\n6e-4,100\n");
+    write("rate.csv", "time_s,strain_rate\n0,0\n1e-5,1200\n");
   }
   void TearDown() override { fs::remove_all(dir_); }
 
@@ -99,6 +100,10 @@ class SceneTest : public ::testing::Test {
       j["specimen"] = {{"model", "dem"}, {"grain_size_curve", "psd.csv"}};
     if (selector == "specimen.contact_law")  // a DEM specimen with that grain law
       j["specimen"] = {{"model", "dem"}, {"grain_size_curve", "psd.csv"}, {"contact_law", value}};
+    if (selector == "loading.kind" && value == "strain_rate")  // no bars, no pulse; DEM only
+      j = {{"loading", {{"kind", "strain_rate"}, {"file", "rate.csv"}}},
+           {"specimen", {{"model", "dem"}, {"grain_size_curve", "psd.csv"}}},
+           {"time", {{"end", 1e-3}}}};
     if (selector == "specimen.model" && value == "fe")  // K_u >= the curve's steepest slope
       j["specimen"] = {{"model", "fe"}, {"loading_curve", "curve.csv"}, {"unloading_modulus", 2e9}};
     return j;
@@ -148,25 +153,17 @@ TEST(SceneDocs, DocsAndParameterTableAgree) {
 
 TEST_F(SceneTest, EveryParameterIsAccepted) {
   // Values for keys without a literal default: required keys and the derived defaults (gauges,
-  // the safety factor that depends on the specimen model).
-  const std::map<std::string, json> example = {{"bars.incident.length", 1.0},
-                                               {"bars.transmission.length", 1.0},
-                                               {"bars.incident.gauges", {0.25, 0.5}},
-                                               {"bars.transmission.gauges", {0.5}},
-                                               {"pulse.kind", "trapezoid"},
-                                               {"pulse.amplitude", 100e6},
-                                               {"pulse.duration", 300e-6},
-                                               {"pulse.file", "pulse.csv"},
-                                               {"specimen.model", "elastic"},
-                                               {"specimen.constrained_modulus", 230e6},
-                                               {"specimen.loading_curve", "curve.csv"},
-                                               {"specimen.grain_size_curve", "psd.csv"},
-                                               {"specimen.unloading_modulus", 2e9},
-                                               {"time.end", 1e-3},
-                                               {"time.safety_factor", 0.5},
-                                               {"incident.gauge_distance", 0.5},
-                                               {"transmission.gauge_distance", 0.5},
-                                               {"specimen.length", 0.0093}};
+  // the safety factor that depends on the specimen model, the energy tolerance on the loading).
+  const std::map<std::string, json> example = {
+      {"bars.incident.length", 1.0}, {"bars.transmission.length", 1.0},
+      {"bars.incident.gauges", {0.25, 0.5}}, {"bars.transmission.gauges", {0.5}},
+      {"pulse.kind", "trapezoid"}, {"pulse.amplitude", 100e6}, {"pulse.duration", 300e-6},
+      {"pulse.file", "pulse.csv"}, {"loading.file", "rate.csv"}, {"specimen.model", "elastic"},
+      {"specimen.constrained_modulus", 230e6}, {"specimen.loading_curve", "curve.csv"},
+      {"specimen.grain_size_curve", "psd.csv"}, {"specimen.unloading_modulus", 2e9},
+      {"time.end", 1e-3}, {"time.safety_factor", 0.5}, {"time.energy_tolerance", 0.01},
+      {"incident.gauge_distance", 0.5}, {"transmission.gauge_distance", 0.5},
+      {"specimen.length", 0.0093}};
   for (const ParamDoc& d : parameters()) {
     json value;
     if (d.default_value == "required" || d.default_value.front() == '[' || example.count(d.path))

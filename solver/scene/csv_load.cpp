@@ -37,7 +37,7 @@ CsvColumns read_two_column_csv(const std::string& path, const std::string& x_nam
     throw InputError(path, "",
                      "needs at least 2 data rows (" + x_name + ", " + y_name + "), found " +
                          std::to_string(t.rows()));
-  return CsvColumns{t.columns[0], t.columns[1], t.lines};
+  return CsvColumns{t.columns[0], t.columns[1], t.lines, t.header};
 }
 
 namespace {
@@ -56,6 +56,22 @@ void require_increasing(const std::string& path, const CsvColumns& c,
 Table1D load_pulse_table(const std::string& path) {
   const CsvColumns c = read_two_column_csv(path, "time_s", "stress_pa");
   require_increasing(path, c, c.x, "time_s");
+  Table1D t;
+  t.x = c.x;
+  t.y = c.y;
+  return t;
+}
+
+Table1D load_strain_rate_table(const std::string& path) {
+  const CsvColumns c = read_two_column_csv(path, "time_s", "strain_rate");
+  if (!c.header.empty() && (c.header[0] != "time_s" || c.header[1] != "strain_rate"))
+    throw InputError(path, "",
+                     "the header must read time_s,strain_rate (1/s), got " + c.header[0] + "," +
+                         c.header[1]);
+  require_increasing(path, c, c.x, "time_s");
+  if (c.x[0] < 0)
+    throw InputError(path, at_line(c.line[0]),
+                     "time_s must start at >= 0 (the run starts at t = 0), got " + show(c.x[0]));
   Table1D t;
   t.x = c.x;
   t.y = c.y;

@@ -1,6 +1,7 @@
-// The two tables a scene can reference: a tabulated pulse (time_s, stress_pa) and a compaction
-// loading curve (strain, stress_pa), read with io::read_csv (format in io/csv.hpp), then held
-// to their rules: exactly two finite columns, SI units, increasing where the physics needs it.
+// The tables a scene can reference: a tabulated pulse (time_s, stress_pa), a compaction
+// loading curve (strain, stress_pa) and a strain-rate history (time_s, strain_rate), read with
+// io::read_csv (format in io/csv.hpp), then held to their rules: exactly two finite columns,
+// SI units, increasing where the physics needs it.
 // Errors: InputError(csv_path, "line N", rule), or path "" for whole-file problems.
 #pragma once
 #include <string>
@@ -14,6 +15,7 @@ namespace kolsky::scene {
 struct CsvColumns {
   std::vector<double> x, y;
   std::vector<size_t> line;
+  std::vector<std::string> header;  ///< the column names, empty without a header row
 };
 
 /// Reads a two-column table; x_name/y_name name the columns in error messages. The first
@@ -23,6 +25,12 @@ CsvColumns read_two_column_csv(const std::string& path, const std::string& x_nam
 
 /// Pulse table (time_s, stress_pa): at least 2 rows, time strictly increasing.
 Table1D load_pulse_table(const std::string& path);
+
+/// Strain-rate history (time_s, strain_rate in 1/s; Sec. 5.2.1): at least 2 rows, time
+/// strictly increasing from >= 0 (the run starts at t = 0). A header, if present, must name
+/// the columns time_s, strain_rate: a pulse table (time_s, stress_pa) given by mistake would
+/// otherwise drive the wall at "rates" of 1e8 /s.
+Table1D load_strain_rate_table(const std::string& path);
 
 /// Loading curve (strain, stress_pa), compression positive: first row (0, 0), both columns
 /// strictly increasing. The table extrapolates linearly past its last strain, so a specimen

@@ -91,6 +91,18 @@ std::vector<ParamSpec> build_table() {
   s.add(VT::number, "pulse.scale", tab.scale, "-", kPositive,
         "Factor applied to the tabulated stress", "pulse.kind=tabulated");
 
+  // Sec. 5.2.1: methodology 2 (bars) for tests that report the incident wave, methodology 1
+  // (strain_rate) for those that report only the strain rate (Wang 2018, Huang 2013).
+  s.add(VT::choice, "loading.kind", "bars", "-", kNoRange,
+        "What loads the specimen: bars (the pulse through the bars) or strain_rate (Sec. 5.2.1, "
+        "methodology 1: no bars, the incident-side wall moves to impose a tabulated strain rate, "
+        "the transmission-side wall is fixed; specimen.model = dem only; no bars or pulse keys)",
+        "", {"bars", "strain_rate"});
+  s.add(VT::path, "loading.file", kRequired, "path", kNoRange,
+        "CSV table time_s,strain_rate (1/s, compression +), time strictly increasing from >= 0; "
+        "rate linear between rows, 0 after the last row; strain by Eq. 5.1",
+        "loading.kind=strain_rate");
+
   const bar::ColumnParams col;
   s.add(VT::choice, "specimen.model", kRequired, "-", kNoRange,
         "Specimen model: 1-D column (elastic or compaction), axisymmetric FE (fe, Sec. 2.3) or "
@@ -158,8 +170,10 @@ std::vector<ParamSpec> build_table() {
                 "safety factor; a DEM specimen's raw limit is the single-contact Rayleigh step)");
   s.add(VT::boolean, "time.check_stability", time.check_stability, "-", kNoRange,
         "Stop on non-finite values or energy growth (false only to test the detector)");
-  s.add(VT::number, "time.energy_tolerance", time.energy_tolerance, "-", kPositive,
-        "Relative energy growth that counts as a blow-up");
+  s.add_derived(VT::number, "time.energy_tolerance", "0.01; 0.05 for loading.kind = strain_rate",
+                "-", kPositive,
+                "Relative energy growth that counts as a blow-up (strain-rate walls judge against "
+                "their own work, shpb::kWallsEnergyTolerance)");
   s.add(VT::number, "output.interval", shpb::OutputSpec{}.interval, "s", kNonNegative,
         "Probe sampling interval; 0 = every 1e-6 s (rounded to whole steps)");
   s.add(VT::number, "output.snapshot_interval", shpb::OutputSpec{}.snapshot_interval, "s",
