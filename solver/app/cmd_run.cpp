@@ -1,7 +1,8 @@
 // `kolsky run SCENE.json [-o OUT.h5] [--gauges-csv G.csv] [--plot DIR] [--threads N] [--quiet]
 //  [--checkpoint-every S [--checkpoint-file CK.h5]] [--restart CK.h5]`: builds the scene's SHPB
 // assembly (shpb/assembly.hpp), runs it, and writes its probes by name plus the classic
-// analysis of the face waves (and, with --plot, their figures).
+// analysis of the face waves (strain-rate walls: the direct analysis of the wall stresses) and,
+// with --plot, their figures.
 #include <omp.h>
 
 #include <algorithm>
@@ -30,7 +31,9 @@ namespace kolsky::app {
 
 namespace {
 
-// Probes plus the classic analysis of the face waves, on the run's clock.
+// Probes plus the run's analysis (of the face waves, or direct for strain-rate walls), on the
+// run's clock; analysis series the history does not have (no wave energies in a direct
+// analysis) are left out.
 io::RunRecord to_record(const scene::Scene& sc, const shpb::RunResult& r,
                         const shpb::SpecimenHistory& h, const nlohmann::json& summary) {
   io::RunRecord rec;
@@ -56,7 +59,8 @@ io::RunRecord to_record(const scene::Scene& sc, const shpb::RunResult& r,
       {"analysis_dissipation_percent", &h.dissipation_percent}};
   const char* units[] = {"1", "1/s", "Pa", "Pa", "Pa", "1", "%"};
   for (size_t k = 0; k < std::size(analysed); ++k)
-    rec.probes.push_back({analysed[k].first, units[k], t, *analysed[k].second});
+    if (analysed[k].second->size() == t.size())
+      rec.probes.push_back({analysed[k].first, units[k], t, *analysed[k].second});
   return rec;
 }
 
@@ -100,6 +104,10 @@ int cmd_run(const std::vector<std::string>& args) {
   const std::string& file = o.positional[0];
   if (o.threads > 0) omp_set_num_threads(o.threads);
   scene::Scene sc = scene::load_scene(file);
+  if (!o.gauges_csv.empty() && sc.spec.strain_rate)
+    throw InputError(file, "loading.kind",
+                     "--gauges-csv: strain-rate walls (loading.kind = strain_rate) have no bars, "
+                     "hence no gauge record");
   // A DEM specimen is packed (or read from its cache) while the simulation is built: minutes
   // at N = 2, tens of minutes at N = 1. A bar per phase on a terminal.
   std::optional<Progress> packing_bar;
@@ -171,11 +179,10 @@ int cmd_run(const std::vector<std::string>& args) {
   }
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
-  const auto setup = sim->analysis_setup();
-  const auto waves = r.face_waves(setup.incident.youngs_modulus, setup.transmission.youngs_modulus);
-  const auto h = shpb::analyze(waves, setup);
-  const auto summary = summarize(waves, h);
-  io::RunRecord rec = to_record(sc, r, h, summary);
+  // Bars: the wave analysis of the face waves; strain-rate walls: the direct one (no waves).
+  const shpb::RunAnalysis analysis = sim->analyse(r);
+  const auto summary = summarize(analysis.waves, analysis.history);
+  io::RunRecord rec = to_record(sc, r, analysis.history, summary);
   if (resume) rec.meta["restarted_from"] = o.restart;
   if (snapshots) rec.meta["snapshots"] = io::snapshot_paths(out).first;
   io::write_run_hdf5(out, rec);
@@ -198,7 +205,7 @@ int cmd_run(const std::vector<std::string>& args) {
   std::printf("  %-26s %ld\n  %-26s %.6g\n  %-26s %.3g\n", "steps", r.steps, "dt_s", r.dt,
               "wall_time_s", wall);
   std::fputs(format_summary(summary).c_str(), stdout);
-  if (!o.plot_dir.empty()) write_plots(plot::run_figures(r, waves, h, file), o.plot_dir, gnuplot, "run");
+  if (!o.plot_dir.empty()) write_plots(plot::run_figures(r, analysis.waves, analysis.history, file), o.plot_dir, gnuplot, "run");
   if (!r.complete) {
     std::fprintf(stderr, "kolsky: numerical failure: %s; output kept in %s, marked incomplete\n",
                  r.failure.c_str(), out.c_str());

@@ -129,6 +129,42 @@ restart)
   expect_exit 1 "$kolsky" run s.json --checkpoint-file x.h5
   expect_exit 1 "$kolsky" run s.json --checkpoint-every -1
   no_temp_files ;;
+strain_rate)
+  # Strain-rate-controlled walls (Sec. 5.2.1, methodology 1): the shipped example runs, is
+  # analysed directly (no waves: no wave probes, no wave analysis), restarts bitwise, and its
+  # bad inputs exit 2 naming the file and the path.
+  ex=$repo/data/examples/wang2018_strain_rate_example.json
+  expect_exit 0 "$kolsky" run "$ex" -o w.h5 --quiet
+  grep -q "sigma_back_at_peak_eps_mpa" out.txt || fail "summary lacks the stress-strain end point: $(cat out.txt)"
+  grep -q "w_incident" out.txt && fail "wave energies in a strain-rate summary"
+  h5dump -a /meta/complete w.h5 | grep -q "(0): 1" || fail "complete flag not 1"
+  for p in specimen_strain strain_rate stress_front stress_back stress_avg alpha face_displacement_front \
+           grain_contacts analysis_strain analysis_stress_back analysis_stress_avg analysis_alpha; do
+    h5dump -H -d /probes/$p/value w.h5 >/dev/null || fail "probe $p missing"; done
+  h5dump -H -d /probes/wave_incident/value w.h5 >/dev/null 2>&1 && fail "a wave probe in a strain-rate run"
+  expect_exit 0 "$kolsky" run "$ex" -o part.h5 --quiet --checkpoint-every 30e-6
+  [ -s part.ckpt.h5 ] || fail "no checkpoint written"
+  expect_exit 0 "$kolsky" run "$ex" -o again.h5 --quiet --restart part.ckpt.h5
+  h5diff w.h5 again.h5 /probes /probes >diff.txt || fail "restarted strain-rate run differs: $(head -5 diff.txt)"
+  expect_exit 2 "$kolsky" run "$ex" -o g.h5 --gauges-csv g.csv
+  grep -q "wang2018_strain_rate_example.json: loading.kind: --gauges-csv" err.txt || fail "gauges message: $(cat err.txt)"
+  walls() { cat > "$1" <<JSON
+{"loading": {"kind": "strain_rate", "file": "$2"} $3,
+ "specimen": {"model": "dem", "grain_size_curve": "$repo/data/digitized/chapter4/song2009_psd_reconstructed.csv",
+              "upscale": 5, "seed": 7, "length": 0.006, "diameter": 0.008},
+ "time": {"end": 20e-6}}
+JSON
+  }
+  printf 'time_s,strain_rate\n0,0\n2e-5,1\n1e-5,1\n' > bad.csv
+  walls b.json bad.csv ""
+  expect_exit 2 "$kolsky" run b.json -o b.h5
+  grep -q "bad.csv: line 4: time_s must be strictly increasing" err.txt || fail "CSV message: $(cat err.txt)"
+  printf 'time_s,strain_rate\n0,0\n1e-5,1200\n' > rate.csv
+  walls p.json rate.csv ', "pulse": {"kind": "trapezoid", "amplitude": 1e8, "duration": 1e-4}'
+  expect_exit 2 "$kolsky" run p.json -o b.h5
+  grep -q "p.json: pulse: 'pulse' is unused with loading.kind = strain_rate" err.txt || fail "unused message: $(cat err.txt)"
+  [ "$(wc -l < err.txt)" -eq 1 ] || fail "error is not one line"
+  [ ! -e b.h5 ] || fail "output written for bad input"; no_temp_files ;;
 *) fail "unknown case" ;;
 esac
 echo "PASS [$case_name]"
