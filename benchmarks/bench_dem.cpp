@@ -14,6 +14,15 @@
 //     packs them once: the packing's step count does not depend on N, so its cost scales with
 //     the grain count (measured on one core of the development machine: 6 min for N = 1.5,
 //     21 min for N = 1, with the other core busy; OpenMP threads shorten it).
+//   BM_DemBreakageIdle/threads: BM_DemCompaction's scene and steps with particle breakage on
+//     (breakage_engine.hpp, checked every step) but strong grains (sigma_lim0 = 1e15 Pa: no
+//     break can happen), so its particle_steps_per_s against BM_DemCompaction's in the same
+//     run is the cost of the checks (issue 14: at least 0.95).
+//   BM_DemBreakageGrowing/threads: the same scene with sigma_lim0 = 0.3 GPa and no
+//     coordination limit, so grains break from the first steps; dt = 0.25 x the Rayleigh step
+//     of the smallest daughter possible (DemOptions::smallest_radius_to_come); counters
+//     particle_steps_per_s (grains counted at every step), breaks, grains at the end and
+//     us_per_replacement (wall time in apply_breaks per broken grain).
 //   BM_Reference/threads (1, 2): the frozen reference workload (reference_workload.hpp),
 //     registered first; the tracked figure is particle_steps_per_s / ref_pair_updates_per_s
 //     of the same process, per CPU second for 1 thread and per wall second for 2
@@ -22,6 +31,7 @@
 #include <omp.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cstdint>
 #include <cstdio>
 #include <filesystem>
@@ -32,6 +42,7 @@
 #include <string>
 
 #include "dem/assembly.hpp"
+#include "dem/breakage_engine.hpp"
 #include "dem/contact_hertz_mindlin.hpp"
 #include "dem/dem_system.hpp"
 #include "dem/packing.hpp"
@@ -181,7 +192,8 @@ struct Scene {
   double dt = 0;
 };
 
-Scene make_scene(const Specimen& s) {
+// opt.smallest_radius_to_come > 0 (breakage): dt from that radius, as a breaking run steps.
+Scene make_scene(const Specimen& s, const dem::DemOptions& opt = {}) {
   const dem::Material m{78e9, 0.3, s.density};  // G = E / (2 (1 + nu)) = 30 GPa
   const std::vector<dem::Material> materials{m};
   const dem::HertzMindlinParams hm{0.5, 0.5};
@@ -201,11 +213,12 @@ Scene make_scene(const Specimen& s) {
     p.inertia[i] = 0.4 * p.mass[i] * r * r;
   }
   Scene sc;
-  sc.sys = std::make_unique<dem::DemSystem>(std::move(p), materials, dem::HertzMindlin(materials, hm));
+  sc.sys = std::make_unique<dem::DemSystem>(std::move(p), materials, dem::HertzMindlin(materials, hm), opt);
   sc.sys->add_cylinder(dem::CylinderWall{0, 0, s.radius, std::nullopt, wall});
   sc.sys->add_plane(dem::PlaneWall{{0, 0, 0}, {0, 0, 1}, dem::FixedPlane{}, wall});
   sc.sys->add_plane(dem::PlaneWall{{0, 0, s.top}, {0, 0, -1},
                                    dem::PrescribedPlane{dem::VelocityHistory{{0.0}, {9.3}}}, wall});
+  if (opt.smallest_radius_to_come > 0) r_min = std::min(r_min, opt.smallest_radius_to_come);
   sc.dt = 0.25 * dem::rayleigh_time_step(r_min, m);
   return sc;
 }
@@ -239,6 +252,51 @@ void run(benchmark::State& st, const Specimen& s, int threads, int steps) {
   omp_set_num_threads(previous);
 }
 
+// Breakage cases: the compaction scene with breakage checked every step; `sigma` sets whether
+// grains break (docs/breakage.md).
+void run_breaking(benchmark::State& st, const Specimen& s, int threads, int steps, double sigma) {
+  const int previous = omp_get_max_threads();
+  omp_set_num_threads(threads);
+  dem::BreakageParams bp;
+  bp.sigma_lim0 = sigma;
+  bp.coordination_limit = 0;
+  dem::DemOptions opt;  // growing: the step of the smallest possible daughter
+  if (sigma < 1e12) opt.smallest_radius_to_come = dem::smallest_radius_to_come(bp, s.particles);
+  Scene sc = make_scene(s, opt);
+  for (int k = 0; k < 100; ++k) sc.sys->step(sc.dt);  // warm-up, untimed, before any check
+  dem::BreakageState br = dem::start_breakage(bp, 1, sc.sys->particles());
+  double particle_steps = 0, replace_s = 0, breaks = 0;
+  for (auto _ : st) {
+    for (int k = 0; k < steps; ++k) {
+      sc.sys->step(sc.dt);
+      const auto events = dem::find_breaks(*sc.sys, br);
+      if (!events.empty()) {
+        const auto t0 = std::chrono::steady_clock::now();
+        breaks += static_cast<double>(dem::apply_breaks(*sc.sys, br, events));
+        replace_s += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+      }
+      particle_steps += static_cast<double>(sc.sys->particles().size());
+    }
+  }
+  st.counters["grains"] = static_cast<double>(sc.sys->particles().size());
+  st.counters["threads"] = threads;
+  st.counters["particle_steps_per_s"] = benchmark::Counter(particle_steps, benchmark::Counter::kIsRate);
+  st.counters["breaks"] = breaks;
+  st.counters["us_per_replacement"] = breaks > 0 ? 1e6 * replace_s / breaks : 0.0;
+  st.counters["dt_ns"] = sc.dt * 1e9;
+  omp_set_num_threads(previous);
+}
+
+void BM_DemBreakageIdle(benchmark::State& st) {
+  run_breaking(st, benchmark_specimen(), static_cast<int>(st.range(0)), 200, 1e15);
+  st.SetLabel(benchmark_specimen().label);
+}
+
+void BM_DemBreakageGrowing(benchmark::State& st) {
+  run_breaking(st, benchmark_specimen(), static_cast<int>(st.range(0)), 400, 0.3e9);
+  st.SetLabel(benchmark_specimen().label);
+}
+
 void BM_DemCompaction(benchmark::State& st) {
   run(st, benchmark_specimen(), static_cast<int>(st.range(0)), 200);
   st.SetLabel(benchmark_specimen().label);
@@ -254,5 +312,7 @@ void BM_DemUpscale(benchmark::State& st) {
 }  // namespace
 
 BENCHMARK(BM_DemCompaction)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_DemBreakageIdle)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_DemBreakageGrowing)->Arg(1)->Arg(2)->Iterations(1)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_DemUpscale)->Arg(10)->Arg(15)->Arg(20)->Arg(25)->Arg(30)->Arg(40)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK_MAIN();

@@ -185,5 +185,17 @@ TEST(IoSnapshots, IncompleteRunKeepsSnapshotsAndAnAbandonedWriterLeavesNothing) 
   EXPECT_EQ(dir.n_entries(), 2u) << "an unfinished writer must remove its temporary file";
 }
 
+TEST(IoSnapshots, FramesWithDifferentParticleCountsEachDescribeTheirOwnGrid) {
+  // Breakage changes the count between frames (docs/breakage.md): every XDMF grid must carry its
+  // own size, or ParaView reads past the arrays of the smaller frames.
+  const std::string x = io::xdmf_text("run.particles.h5", {{0, 0.0, 249}, {100, 1e-6, 756}});
+  EXPECT_NE(x.find("NumberOfElements=\"249\""), std::string::npos);
+  EXPECT_NE(x.find("NumberOfElements=\"756\""), std::string::npos);
+  EXPECT_NE(x.find("Dimensions=\"249 3\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">run.particles.h5:/snapshots/0/position"),
+            std::string::npos);
+  EXPECT_NE(x.find("Dimensions=\"756 3\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">run.particles.h5:/snapshots/1/position"),
+            std::string::npos);
+}
+
 }  // namespace
 }  // namespace kolsky

@@ -11,7 +11,6 @@ namespace kolsky::dem {
 
 namespace {
 
-constexpr double kHardinThreshold = 75e-6;  // m, Sec. 5.3.1 (Hardin's No. 200 sieve)
 constexpr int kCurvePoints = 64;            // log-spaced rows of the tracked curves
 
 std::vector<double> diameters(const Particles& p) {
@@ -28,7 +27,7 @@ std::vector<double> curve_sizes(const BreakageParams& p, const Particles& grains
   for (int k = 0; k < kCurvePoints; ++k)
     s.push_back(lo * std::pow(hi / lo, static_cast<double>(k) / (kCurvePoints - 1)));
   s.back() = hi;
-  if (kHardinThreshold > lo && kHardinThreshold < hi) s.push_back(kHardinThreshold);
+  if (p.hardin_threshold > lo && p.hardin_threshold < hi) s.push_back(p.hardin_threshold);
   std::sort(s.begin(), s.end());
   s.erase(std::unique(s.begin(), s.end()), s.end());
   return s;
@@ -168,7 +167,7 @@ psd::GrainSizeCurve current_grain_size_curve(const BreakageState& s, const Parti
 }
 
 double relative_breakage(const BreakageState& s, const Particles& grains) {
-  return hardin_br(s.initial_curve, current_grain_size_curve(s, grains), kHardinThreshold);
+  return hardin_br(s.initial_curve, current_grain_size_curve(s, grains), s.params.hardin_threshold);
 }
 
 }  // namespace kolsky::dem

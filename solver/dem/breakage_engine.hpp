@@ -68,7 +68,7 @@ std::vector<BreakEvent> find_breaks(const DemSystem& sys, const BreakageState& s
 std::size_t apply_breaks(DemSystem& sys, BreakageState& s, const std::vector<BreakEvent>& events);
 
 /// The specimen's grain-size curve now (simulated grains plus fines) on s.sizes, and Hardin's
-/// B_r of it against the initial curve (75 um threshold, Sec. 5.3.1).
+/// B_r of it against the initial curve (threshold params.hardin_threshold: 75 um x N).
 psd::GrainSizeCurve current_grain_size_curve(const BreakageState& s, const Particles& grains);
 double relative_breakage(const BreakageState& s, const Particles& grains);
 

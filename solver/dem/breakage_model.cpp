@@ -56,6 +56,7 @@ void validate(const BreakageParams& p, const std::string& path) {
     fail("comminution_factor", "must be in (0, 1)");
   if (!positive(p.fines_fractal_dimension)) fail("fines_fractal_dimension", "must be finite and > 0");
   if (!positive(p.fines_d_min)) fail("fines_d_min", "must be finite and > 0 m");
+  if (!positive(p.hardin_threshold)) fail("hardin_threshold", "must be finite and > 0 m");
 }
 
 void validate_against_d50(const BreakageParams& p, double d50_initial, const std::string& path) {

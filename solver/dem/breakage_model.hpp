@@ -38,6 +38,10 @@ struct BreakageParams {
   double comminution_factor = 0.22;  ///< grains below this x d50 never break (Sec. 5.2.3)
   double fines_fractal_dimension = 2.6;  ///< alpha of the lost mass, Eq. 5.16
   double fines_d_min = 7.5e-6;       ///< m, d_min of Eq. 5.16 (Wang et al. 2018)
+  /// Hardin's size threshold at the specimen's scale (m): 75 um (Sec. 5.3.1) times the
+  /// upscaling factor, so that B_r of the upscaled curves equals B_r of the curves shifted
+  /// back by N (B_r is an area in log d). Set by the scene from specimen.upscale.
+  double hardin_threshold = 75e-6;
 };
 
 /// Throws kolsky::InputError("", path + "." + key, rule) on the first broken rule:

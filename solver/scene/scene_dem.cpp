@@ -89,6 +89,7 @@ dem::DemSpecimenParams read_dem_specimen(JsonReader& r, const std::string& base_
     b.comminution_factor = r.number(p + "comminution_factor");
     b.fines_fractal_dimension = r.number(p + "fines_fractal_dimension");
     b.fines_d_min = r.number(p + "fines_d_min");
+    b.hardin_threshold *= r.number("specimen.upscale");  // 75 um at the original grain scale
     d.breakage_check_interval = r.integer(p + "check_interval");
     try {
       dem::validate(b);  // the rules between keys (var range, var_a != 0), before any packing

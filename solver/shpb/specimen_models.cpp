@@ -28,7 +28,7 @@ void add_model_probes(const dem::DemSpecimen& d, ProbeRecords& out) {
                  [=](double) { return static_cast<double>(ledger().n_secondary); }});
   out.push_back({"lost_volume", "m^3", "solid volume removed as fines (46.6 % of each parent, Table 5.3)",
                  [=](double) { return ledger().lost_volume; }});
-  out.push_back({"relative_breakage", "1", "Hardin's B_r of grains + fines against the initial grains (75 um, Sec. 5.3.1)",
+  out.push_back({"relative_breakage", "1", "Hardin's B_r of grains + fines against the initial grains (75 um x N, Sec. 5.3.1)",
                  [s, sys](double) { return dem::relative_breakage(*s->breakage(), sys->particles()); }});
   out.push_back({"breakage_kinetic_removed", "J", "kinetic energy that left with the lost mass",
                  [s](double) { return s->breakage()->kinetic_removed; }});
