@@ -15,14 +15,16 @@
 //     the grain count (measured on one core of the development machine: 6 min for N = 1.5,
 //     21 min for N = 1, with the other core busy; OpenMP threads shorten it).
 //   BM_DemBreakageIdle/threads: BM_DemCompaction's scene and steps with particle breakage on
-//     (breakage_engine.hpp, checked every step) but strong grains (sigma_lim0 = 1e15 Pa: no
-//     break can happen), so its particle_steps_per_s against BM_DemCompaction's in the same
-//     run is the cost of the checks (issue 14: at least 0.95).
-//   BM_DemBreakageGrowing/threads: the same scene with sigma_lim0 = 0.3 GPa and no
+//     (breakage_engine.hpp) checked every 1, 10 or 50 steps (/threads/interval; 50 is the
+//     default check_interval) but strong grains (sigma_lim0 = 1e15 Pa: no break can
+//     happen), so its particle_steps_per_s against BM_DemCompaction's in the same run is the
+//     cost of the checks (issue 14: at least 0.95).
+//   BM_DemBreakageGrowing/threads: the same scene with sigma_lim0 = 1.5 GPa and no
 //     coordination limit, so grains break from the first steps; dt = 0.25 x the Rayleigh step
 //     of the smallest daughter possible (DemOptions::smallest_radius_to_come); counters
 //     particle_steps_per_s (grains counted at every step), breaks, grains at the end and
-//     us_per_replacement (wall time in apply_breaks per broken grain).
+//     us_per_replacement and us_per_edit (wall time in apply_breaks per broken grain and per
+//     check that broke some).
 //   BM_Reference/threads (1, 2): the frozen reference workload (reference_workload.hpp),
 //     registered first; the tracked figure is particle_steps_per_s / ref_pair_updates_per_s
 //     of the same process, per CPU second for 1 thread and per wall second for 2
@@ -254,7 +256,7 @@ void run(benchmark::State& st, const Specimen& s, int threads, int steps) {
 
 // Breakage cases: the compaction scene with breakage checked every step; `sigma` sets whether
 // grains break (docs/breakage.md).
-void run_breaking(benchmark::State& st, const Specimen& s, int threads, int steps, double sigma) {
+void run_breaking(benchmark::State& st, const Specimen& s, int threads, int steps, double sigma, int interval) {
   const int previous = omp_get_max_threads();
   omp_set_num_threads(threads);
   dem::BreakageParams bp;
@@ -265,17 +267,19 @@ void run_breaking(benchmark::State& st, const Specimen& s, int threads, int step
   Scene sc = make_scene(s, opt);
   for (int k = 0; k < 100; ++k) sc.sys->step(sc.dt);  // warm-up, untimed, before any check
   dem::BreakageState br = dem::start_breakage(bp, 1, sc.sys->particles());
-  double particle_steps = 0, replace_s = 0, breaks = 0;
+  double particle_steps = 0, replace_s = 0, breaks = 0, edits = 0;
   for (auto _ : st) {
     for (int k = 0; k < steps; ++k) {
       sc.sys->step(sc.dt);
+      particle_steps += static_cast<double>(sc.sys->particles().size());
+      if ((k + 1) % interval != 0) continue;
       const auto events = dem::find_breaks(*sc.sys, br);
       if (!events.empty()) {
         const auto t0 = std::chrono::steady_clock::now();
         breaks += static_cast<double>(dem::apply_breaks(*sc.sys, br, events));
+        ++edits;
         replace_s += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
       }
-      particle_steps += static_cast<double>(sc.sys->particles().size());
     }
   }
   st.counters["grains"] = static_cast<double>(sc.sys->particles().size());
@@ -283,17 +287,19 @@ void run_breaking(benchmark::State& st, const Specimen& s, int threads, int step
   st.counters["particle_steps_per_s"] = benchmark::Counter(particle_steps, benchmark::Counter::kIsRate);
   st.counters["breaks"] = breaks;
   st.counters["us_per_replacement"] = breaks > 0 ? 1e6 * replace_s / breaks : 0.0;
+  st.counters["us_per_edit"] = edits > 0 ? 1e6 * replace_s / edits : 0.0;  // one edit per check with breaks
   st.counters["dt_ns"] = sc.dt * 1e9;
+  st.counters["check_interval"] = interval;
   omp_set_num_threads(previous);
 }
 
 void BM_DemBreakageIdle(benchmark::State& st) {
-  run_breaking(st, benchmark_specimen(), static_cast<int>(st.range(0)), 200, 1e15);
+  run_breaking(st, benchmark_specimen(), static_cast<int>(st.range(0)), 200, 1e15, static_cast<int>(st.range(1)));
   st.SetLabel(benchmark_specimen().label);
 }
 
 void BM_DemBreakageGrowing(benchmark::State& st) {
-  run_breaking(st, benchmark_specimen(), static_cast<int>(st.range(0)), 400, 0.3e9);
+  run_breaking(st, benchmark_specimen(), static_cast<int>(st.range(0)), 400, 1.5e9, 1);
   st.SetLabel(benchmark_specimen().label);
 }
 
@@ -312,7 +318,7 @@ void BM_DemUpscale(benchmark::State& st) {
 }  // namespace
 
 BENCHMARK(BM_DemCompaction)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
-BENCHMARK(BM_DemBreakageIdle)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_DemBreakageIdle)->Args({1, 1})->Args({1, 10})->Args({1, 50})->Args({2, 50})->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_DemBreakageGrowing)->Arg(1)->Arg(2)->Iterations(1)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_DemUpscale)->Arg(10)->Arg(15)->Arg(20)->Arg(25)->Arg(30)->Arg(40)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK_MAIN();

@@ -3,9 +3,11 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numbers>
 #include <numeric>
 
 #include "dem/apollonian.hpp"
+#include "dem/dem_contacts.hpp"
 
 namespace kolsky::dem {
 
@@ -85,41 +87,70 @@ BreakageState start_breakage(const BreakageParams& p, std::uint64_t seed, const 
 }
 
 std::vector<BreakEvent> find_breaks(const DemSystem& sys, const BreakageState& s) {
+  // Eq. 5.13 in overlap form for a Hertz pair (critical_overlap): grain i's criterion holds when
+  // delta >= r' (3 pi sigma_i / (4 E'))^2, i.e. ratio = delta (4 E' / (3 pi))^2 (1/r') / sigma_i^2
+  // >= 1: no root, no power, 1/r' = 1/r_i + 1/r_j. The largest contact force orients the set;
+  // forces are compared squared, F^2 = (16/9) E'^2 r' delta^3 for a pair. This pass runs at
+  // every check, so it is kept to a few multiplications per touching contact.
   const Particles& p = sys.particles();
   const auto& mat = sys.materials();
-  const std::size_t n = p.size();
-  std::vector<double> ratio(n, 0.0), largest(n, 0.0);
-  std::vector<Vec3> axis(n);
-  std::vector<int> grain_contacts(n, 0), wall_contacts(n, 0);
-  auto consider = [&](int g, double force, double r_eff, double e_eff, const Vec3& direction) {
-    const auto k = static_cast<std::size_t>(g);
-    ratio[k] = std::max(ratio[k], force / critical_force(s.strength[k], r_eff, e_eff));
-    if (force > largest[k]) largest[k] = force, axis[k] = direction;
-  };
-  const double rigid = std::numeric_limits<double>::infinity();
-  for (const TouchingContact& c : sys.touching_contacts()) {
-    const Material& mi = mat[p.material[c.i]];
-    if (c.j >= 0) {
-      const Material& mj = mat[p.material[c.j]];
-      const double r_eff = effective_radius(p.radius[c.i], p.radius[c.j]);
-      const double e_eff = effective_modulus(mi.youngs_modulus, mi.poisson_ratio, mj.youngs_modulus, mj.poisson_ratio);
-      const double force = 4.0 / 3.0 * e_eff * std::sqrt(r_eff) * c.overlap * std::sqrt(c.overlap);
-      consider(c.i, force, r_eff, e_eff, c.normal);
-      consider(c.j, force, r_eff, e_eff, -c.normal);
-      ++grain_contacts[c.i];
-      ++grain_contacts[c.j];
-    } else {
-      consider(c.i, c.wall_force, p.radius[c.i], effective_modulus(mi.youngs_modulus, mi.poisson_ratio, rigid, 0.0),
-               c.normal);
-      ++wall_contacts[c.i];
+  const std::size_t n = p.size(), n_mat = mat.size();
+  std::vector<double> e_pair(n_mat * n_mat), c_pair(n_mat * n_mat), e_wall(n_mat);
+  for (std::size_t a = 0; a < n_mat; ++a) {
+    e_wall[a] = effective_modulus(mat[a].youngs_modulus, mat[a].poisson_ratio, std::numeric_limits<double>::infinity(), 0.0);
+    for (std::size_t b = 0; b < n_mat; ++b) {
+      const double e = effective_modulus(mat[a].youngs_modulus, mat[a].poisson_ratio, mat[b].youngs_modulus,
+                                         mat[b].poisson_ratio);
+      e_pair[a * n_mat + b] = e;
+      c_pair[a * n_mat + b] = std::pow(4.0 * e / (3.0 * std::numbers::pi), 2);
     }
   }
+  std::vector<double> inv_r(n), inv_s2(n), ratio(n, 0.0), largest2(n, 0.0);
+  for (std::size_t i = 0; i < n; ++i) {
+    inv_r[i] = 1.0 / p.radius[i];
+    inv_s2[i] = 1.0 / (s.strength[i] * s.strength[i]);
+  }
+  // The orienting contact of each grain: its partner (axis from the positions, computed only
+  // for the grains that break) or, for a wall (partner -1), the wall's normal.
+  std::vector<int> partner(n, -1);
+  std::vector<Vec3> wall_axis(n);
+  std::vector<int> grain_contacts(n, 0), wall_contacts(n, 0);
+  sys.for_each_touching_contact(
+      [&](int i, int j, const Vec3&, double dist) {
+        const auto a = static_cast<std::size_t>(i), b = static_cast<std::size_t>(j);
+        const std::size_t m = static_cast<std::size_t>(p.material[a]) * n_mat + static_cast<std::size_t>(p.material[b]);
+        const double delta = p.radius[a] + p.radius[b] - dist;
+        const double inv_r_eff = inv_r[a] + inv_r[b];
+        const double q = delta * c_pair[m] * inv_r_eff;
+        ratio[a] = std::max(ratio[a], q * inv_s2[a]);
+        ratio[b] = std::max(ratio[b], q * inv_s2[b]);
+        // F^2 > largest2 without a division: (16/9) E'^2 delta^3 > largest2 / r'.
+        const double k = 16.0 / 9.0 * e_pair[m] * e_pair[m] * delta * delta * delta;
+        if (k > largest2[a] * inv_r_eff) largest2[a] = k / inv_r_eff, partner[a] = j;
+        if (k > largest2[b] * inv_r_eff) largest2[b] = k / inv_r_eff, partner[b] = i;
+        ++grain_contacts[a];
+        ++grain_contacts[b];
+      },
+      [&](int i, int, const Vec3& normal, double, double force) {
+        // A wall: r' = the grain's radius (a plane), E' of the grain against a rigid wall, and the
+        // wall law's normal force (no Hertz overlap relation for a linear wall spring).
+        const auto a = static_cast<std::size_t>(i);
+        const double f_crit = critical_force(s.strength[a], p.radius[a], e_wall[static_cast<std::size_t>(p.material[a])]);
+        ratio[a] = std::max(ratio[a], force / f_crit);
+        if (force * force > largest2[a]) largest2[a] = force * force, partner[a] = -1, wall_axis[a] = normal;
+        ++wall_contacts[a];
+      });
   std::vector<BreakEvent> events;
   for (std::size_t g = 0; g < n; ++g) {
     if (!(ratio[g] >= 1.0)) continue;
     const int coordination = counted_coordination(s.params, grain_contacts[g], wall_contacts[g]);
-    if (may_break(s.params, 2.0 * p.radius[g], s.d50_initial, coordination))
-      events.push_back({static_cast<int>(g), axis[g]});
+    if (!may_break(s.params, 2.0 * p.radius[g], s.d50_initial, coordination)) continue;
+    Vec3 axis = wall_axis[g];
+    if (partner[g] >= 0) {
+      const Vec3 d = p.x[static_cast<std::size_t>(partner[g])] - p.x[g];
+      axis = (1.0 / std::sqrt(dot(d, d))) * d;
+    }
+    events.push_back({static_cast<int>(g), axis});
   }
   return events;
 }

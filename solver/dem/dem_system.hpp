@@ -170,7 +170,11 @@ class DemSystem {
   DemEnergy energy() const;
   /// Every touching contact of the last force evaluation, pairs first (in pair order), then
   /// wall contacts (in slot, particle order): one serial pass over the contact flags the sweep
-  /// wrote (dem_contacts.cpp). Empty between an edit or restore and the next evaluation.
+  /// wrote. Nothing between an edit or restore and the next evaluation. The visitor form
+  /// (defined in dem_contacts.hpp) calls pair(i, j, x_j - x_i, |x_j - x_i|) and
+  /// wall(i, slot, unit normal towards the wall, overlap, normal force); the listing form
+  /// builds TouchingContacts from it.
+  template <class Pair, class Wall> void for_each_touching_contact(Pair&& pair, Wall&& wall) const;
   std::vector<TouchingContact> touching_contacts() const;
   std::size_t n_pairs() const { return pairs_.size(); }
   std::size_t n_contacts() const;       ///< touching grain pairs

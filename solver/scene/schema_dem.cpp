@@ -113,7 +113,8 @@ void add_breakage_rows(TableBuilder& s, const std::string& dem) {
   s.add(VT::number, p + "fines_d_min", b.fines_d_min, "m", kPositive,
         "d_min of Eq. 5.16, the smallest size of the fines (Wang: 7.5e-6)", dem);
   s.add(VT::integer, p + "check_interval", dem::DemSpecimenParams{}.breakage_check_interval, "-", at_least_one,
-        "Steps between breakage checks (1: every step; docs/breakage.md)", dem);
+        "Steps between breakage checks (a check costs about one step; 1: every step; "
+        "docs/breakage.md)", dem);
 }
 
 }  // namespace kolsky::scene::table
