@@ -47,7 +47,12 @@ std::string path_of_error(const json& breakage, const json& extra_specimen = jso
 TEST(BreakageScene, GrainsBreakDuringARunThatCompletes) {
   const json breakage = {{"sigma_lim0", 2.0e9}, {"coordination_limit", 0}};
   shpb::SimulatedShpb sim(spec_of(breaking_scene(breakage)));
-  const shpb::RunResult r = sim.run();
+  shpb::RunControl control;  // the grain-size curve at the snapshot steps (kolsky run's CSV)
+  std::vector<psd::GrainSizeCurve> curves;
+  control.snapshot_every = 4000;
+  control.snapshot = [](long, double, const dem::Particles&) {};
+  control.grain_size_curve = [&](long, double, const psd::GrainSizeCurve& c) { curves.push_back(c); };
+  const shpb::RunResult r = sim.run(nullptr, control);
   ASSERT_TRUE(r.complete) << r.failure;
   const auto& primary = r.probe("broken_primary").value;
   const auto& count = r.probe("grain_count").value;
@@ -60,6 +65,11 @@ TEST(BreakageScene, GrainsBreakDuringARunThatCompletes) {
   EXPECT_EQ(count.back(), count.front() + 13.0 * (breaks - before_loading));  // each: -1 + 14 grains
   EXPECT_GT(r.probe("relative_breakage").value.back(), 0.0);
   EXPECT_GT(r.probe("lost_volume").value.back(), 0.0);
+  ASSERT_GE(curves.size(), 3u);
+  EXPECT_NO_THROW(curves.back().validate());  // ends at 100 %, non-decreasing
+  // Fines appear below the smallest grain: passing at 2 x d_min of the fines grows from 0.
+  EXPECT_EQ(psd::passing_at(curves.front(), 15e-6), 0.0);
+  EXPECT_GT(psd::passing_at(curves.back(), 15e-6), 0.0);
   EXPECT_EQ(before_loading, 0.0) << "grains break under the packing's residual forces alone";
   // The ledger closes with the replacements booked: specimen + faces hold what entered through
   // the faces, within the 1 % of the incident wave's energy that the run's own check allows

@@ -161,11 +161,22 @@ int cmd_run(const std::vector<std::string>& args) {
     };
   }
   std::unique_ptr<io::SnapshotWriter> snapshots;
+  io::CsvTable curves;
   if (sc.spec.output.snapshot_interval > 0) {
     const auto [h5, xmf] = io::snapshot_paths(out);
     snapshots = std::make_unique<io::SnapshotWriter>(h5, xmf);
     control.snapshot_every = steps_per(sc.spec.output.snapshot_interval, sim->schedule().dt);
     control.snapshot = [&](long n, double t, const dem::Particles& p) { snapshots->add(n, t, p); };
+    // Breaking grains: the grain-size curve (grains + fines) at the same times, one CSV table.
+    curves.header = {"time_s", "diameter_m", "percent_passing"};
+    curves.columns.resize(3);
+    control.grain_size_curve = [&](long, double t, const psd::GrainSizeCurve& c) {
+      for (std::size_t k = 0; k < c.size(); ++k) {
+        curves.columns[0].push_back(t);
+        curves.columns[1].push_back(c.diameter[k]);
+        curves.columns[2].push_back(c.percent_passing[k]);
+      }
+    };
   }
 
   Progress progress(sc.spec.time.end_time, !o.quiet && stderr_is_terminal(), "kolsky run ");
@@ -187,6 +198,12 @@ int cmd_run(const std::vector<std::string>& args) {
   if (snapshots) rec.meta["snapshots"] = io::snapshot_paths(out).first;
   io::write_run_hdf5(out, rec);
   if (snapshots) snapshots->finish(r.complete);  // kept, marked complete = 0, after a blow-up
+  if (!curves.columns.empty() && !curves.columns[0].empty()) {
+    const std::string stem = out.substr(0, out.size() - (out.size() > 3 && out.ends_with(".h5") ? 3 : 0));
+    io::write_csv(stem + ".grain_size_curves.csv", curves,
+                  "grain-size curves of " + file + " (grains + Eq. 5.16 fines, docs/breakage.md) at the snapshot "
+                  "times" + std::string(r.complete ? "" : "; INCOMPLETE run"));
+  }
   if (!o.gauges_csv.empty()) {
     // The first gauge of each bar, in the input format of `kolsky analyze`.
     io::CsvTable g;

@@ -5,6 +5,7 @@
 #include <functional>
 
 #include "dem/particles.hpp"
+#include "psd/grain_size_curve.hpp"
 
 namespace kolsky::shpb {
 
@@ -20,6 +21,9 @@ struct RunControl {
   /// Assemblies without grains never call it.
   long snapshot_every = 0;
   std::function<void(long step, double t, const dem::Particles&)> snapshot;
+  /// At the same steps, for a specimen whose grains break: its grain-size curve then (grains
+  /// plus fines, dem::current_grain_size_curve; docs/breakage.md).
+  std::function<void(long step, double t, const psd::GrainSizeCurve&)> grain_size_curve;
   /// Continue from this state (a checkpoint of a simulation built from the same spec).
   const ShpbState* resume = nullptr;
 };
