@@ -1,8 +1,22 @@
 #!/usr/bin/env bash
 # Installs the Debian packages kolsky needs, and only those that are missing.
 # Idempotent: a second run installs nothing and does not call apt-get at all.
-# Usage: scripts/install-deps.sh [--check]   (--check: report what is missing, install nothing)
+# Usage: scripts/install-deps.sh [--check] [--bench-peers]
+#   --check        report what is missing, install nothing
+#   --bench-peers  also the optional peer DEM codes for benchmarks/lammps/run.sh (LAMMPS and
+#                  LIGGGHTS, Debian bookworm packages `lammps`, `liggghts`); only run.sh passes
+#                  it: the build, `make test` and CI never need them (docs/dem.md, Performance)
 set -euo pipefail
+
+check=0
+peers=0
+for arg in "$@"; do
+  case "$arg" in
+    --check) check=1 ;;
+    --bench-peers) peers=1 ;;
+    *) echo "install-deps: unknown option '$arg' (use --check, --bench-peers)" >&2; exit 2 ;;
+  esac
+done
 
 packages=(
   build-essential cmake pkg-config git       # toolchain
@@ -15,6 +29,10 @@ packages=(
   nlohmann-json3-dev                         # JSON scenes
   gnuplot-nox                                # plots (pngcairo terminal)
 )
+if [ "$peers" -eq 1 ]; then
+  # lmp (LAMMPS 2022, GRANULAR, Open MPI) and liggghts (3.8.0); mpirun comes with openmpi-bin.
+  packages+=(lammps liggghts openmpi-bin)
+fi
 
 missing=()
 for p in "${packages[@]}"; do
@@ -29,7 +47,7 @@ if [ ${#missing[@]} -eq 0 ]; then
 fi
 
 echo "install-deps: missing: ${missing[*]}"
-if [ "${1:-}" = "--check" ]; then exit 1; fi
+if [ "$check" -eq 1 ]; then exit 1; fi
 
 if [ "$(id -u)" -ne 0 ]; then
   if command -v sudo >/dev/null 2>&1; then SUDO=sudo; else
