@@ -50,53 +50,17 @@
 #include "dem/packing.hpp"
 #include "io/csv.hpp"
 #include "psd/grain_size_curve.hpp"
+#include "compaction_scene.hpp"  // the scene, shared with dem_agreement and the peer test
 #include "reference_workload.hpp"
 
 namespace {
 
 using namespace kolsky;
 
-struct Specimen {
-  dem::Particles particles;
-  double density = 2650, radius = 0.00955, top = 0.0085;
-  std::string label;  ///< which packing (shown in the benchmark's output and JSON)
-};
-
-// LAMMPS atomic-sphere data through `gzip -dc`: after the "Atoms" line, `id type diameter
-// density x y z`. Returns false when the file is absent or unreadable.
-bool read_pack(const std::string& path, Specimen& s) {
-  if (!std::filesystem::exists(path)) return false;
-  FILE* pipe = popen(("gzip -dc '" + path + "'").c_str(), "r");
-  if (!pipe) return false;
-  std::string text;
-  char buf[1 << 16];
-  for (std::size_t n; (n = fread(buf, 1, sizeof buf, pipe)) > 0;) text.append(buf, n);
-  if (pclose(pipe) != 0) return false;
-  std::istringstream in(text);
-  std::string line;
-  while (std::getline(in, line) && line.rfind("Atoms", 0) != 0) {
-  }
-  const std::vector<dem::Material> tmp{dem::Material{78e9, 0.3, 2650}};
-  while (std::getline(in, line)) {
-    std::istringstream ls(line);
-    long id = 0;
-    int type = 0;
-    double d = 0, rho = 0, x = 0, y = 0, z = 0;
-    if (!(ls >> id >> type >> d >> rho >> x >> y >> z)) continue;
-    s.density = rho;
-    s.particles.add({x, y, z}, d / 2, 0, tmp);
-  }
-  // The file lists grains largest first, in random places; order them cell by cell (LAMMPS
-  // sorts its atoms too by default, atom_modify sort) so contact partners sit close in
-  // memory: along the Morton curve of cells of the smallest diameter, which keeps partners in
-  // all three directions near (12 % of the listed pairs cross a 2048-grain owner block and
-  // 8 % lie over 1365 grains apart, against 19 % and 17 % for sort_spatially's rows of 1.2 mm
-  // cells; docs/dem.md, "Performance").
-  double d_min = std::numeric_limits<double>::infinity();
-  for (double r : s.particles.radius) d_min = std::min(d_min, 2 * r);
-  if (s.particles.size() > 0) dem::sort_morton(s.particles, d_min);
-  return s.particles.size() > 0;
-}
+using bench::read_pack;
+using bench::Scene;
+using bench::Specimen;
+using bench::make_scene;
 
 psd::GrainSizeCurve song_curve(double n) {
   const io::CsvTable t = io::read_csv(std::string(KOLSKY_SOURCE_DIR) +
@@ -165,7 +129,7 @@ Specimen song_specimen(double n) {
 const Specimen& benchmark_specimen() {
   static const Specimen s = [] {
     Specimen r;
-    const std::string path = std::string(KOLSKY_SOURCE_DIR) + "/../shared/bench/pack_35k.data.gz";
+    const std::string path = bench::shared_pack_path();
     if (read_pack(path, r)) {
       r.label = "pack_35k";
       return r;
@@ -187,42 +151,6 @@ const Specimen& upscaled_specimen(int ten_n) {
   auto it = cache.find(ten_n);
   if (it == cache.end()) it = cache.emplace(ten_n, song_specimen(ten_n / 10.0)).first;
   return it->second;
-}
-
-struct Scene {
-  std::unique_ptr<dem::DemSystem> sys;
-  double dt = 0;
-};
-
-// opt.smallest_radius_to_come > 0 (breakage): dt from that radius, as a breaking run steps.
-Scene make_scene(const Specimen& s, const dem::DemOptions& opt = {}) {
-  const dem::Material m{78e9, 0.3, s.density};  // G = E / (2 (1 + nu)) = 30 GPa
-  const std::vector<dem::Material> materials{m};
-  const dem::HertzMindlinParams hm{0.5, 0.5};
-  dem::Material rigid = m;
-  rigid.youngs_modulus = std::numeric_limits<double>::infinity();
-  const dem::HertzMindlinWall wall(materials, rigid, hm);
-  dem::Particles p = s.particles;
-  double r_min = p.radius[0];
-  for (std::size_t i = 0; i < p.size(); ++i) {
-    p.material[i] = 0;
-    r_min = std::min(r_min, p.radius[i]);
-  }
-  // add() used a placeholder density for the pack file; recompute with the scene's.
-  for (std::size_t i = 0; i < p.size(); ++i) {
-    const double r = p.radius[i];
-    p.mass[i] = 4.0 / 3.0 * 3.141592653589793 * r * r * r * s.density;
-    p.inertia[i] = 0.4 * p.mass[i] * r * r;
-  }
-  Scene sc;
-  sc.sys = std::make_unique<dem::DemSystem>(std::move(p), materials, dem::HertzMindlin(materials, hm), opt);
-  sc.sys->add_cylinder(dem::CylinderWall{0, 0, s.radius, std::nullopt, wall});
-  sc.sys->add_plane(dem::PlaneWall{{0, 0, 0}, {0, 0, 1}, dem::FixedPlane{}, wall});
-  sc.sys->add_plane(dem::PlaneWall{{0, 0, s.top}, {0, 0, -1},
-                                   dem::PrescribedPlane{dem::VelocityHistory{{0.0}, {9.3}}}, wall});
-  if (opt.smallest_radius_to_come > 0) r_min = std::min(r_min, opt.smallest_radius_to_come);
-  sc.dt = 0.25 * dem::rayleigh_time_step(r_min, m);
-  return sc;
 }
 
 void run(benchmark::State& st, const Specimen& s, int threads, int steps) {
