@@ -8,12 +8,15 @@
 // --cut Z keeps the grains with z + r <= Z and puts the lid at Z (the small scene of
 // verification/test_dem_peer_reference.cpp); --dt replaces the scene's step (the peers use
 // 3.78e-8 s, the shared README's value; the scene's own is printed). Output: a header line,
-// then one tab-separated row per step: step, lid_N, bottom_N, tube_N, coordination.
+// then one tab-separated row per step: step, lid_N, bottom_N, tube_N, coordination, and a
+// last line `# loop L s for S steps with N grains`: the wall time from the first requested
+// step to the last (--steps 100,893: the 793 steps LAMMPS' "Loop time" covers in run.sh).
 // Not named bench_*: scripts/run-benchmarks.sh runs every build/benchmarks/bench_* as a
 // Google Benchmark.
 #include <omp.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <sstream>
@@ -70,13 +73,19 @@ int main(int argc, char** argv) {
   if (dt > 0) sc.dt = dt;
   std::printf("step\tlid_N\tbottom_N\ttube_N\tcoordination\n");
   int done = 0;
+  double loop_s = 0;
   for (int target : steps) {
+    const auto t0 = std::chrono::steady_clock::now();
     for (; done < target; ++done) sc.sys->step(sc.dt);
+    if (target != steps.front())  // the rows' output stays outside the timed steps
+      loop_s += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     if (target == 0) sc.sys->compute_forces();
     const bench::PeerQuantities q = bench::peer_quantities(*sc.sys);
     std::printf("%d\t%.6g\t%.6g\t%.6g\t%.6g\n", target, q.lid_force, q.bottom_force,
                 q.tube_force, q.coordination);
     std::fflush(stdout);
   }
+  std::printf("# loop %.6g s for %d steps with %zu grains\n", loop_s, steps.back() - steps.front(),
+              s.particles.size());
   return 0;
 }

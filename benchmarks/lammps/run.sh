@@ -1,181 +1,179 @@
 #!/usr/bin/env bash
-# LAMMPS peer timings for kolsky's bench_dem scene (see README.md in this folder).
+# Side-by-side timings of kolsky's bench_dem scene and its peers (README.md in this folder):
+# kolsky (build/benchmarks/dem_agreement: the scene of BM_DemCompaction, compaction_scene.hpp),
+# LAMMPS in.compaction_hertz_history and in.compaction_granular, LIGGGHTS in.compaction_liggghts.
 #
 #   benchmarks/lammps/run.sh [OUT.json]
 #
-# Runs in.compaction_hertz_history and in.compaction_granular on the benchmark packing, REPS
-# times each on one core (OMP_NUM_THREADS=1, no -sf suffix) and, when mpirun exists, on
-# MPI_RANKS ranks; reads the "Loop time" of the timed run (TIMED steps after WARMUP untimed
-# ones), prints a table and writes OUT.json (default benchmarks/results/<yyyymmdd>_lammps.json).
+# 1. Agreement first (agreement.sh, untimed): the codes' lid and tube forces and coordination
+#    at fixed steps. A speed ratio kolsky / peer is reported only for a peer that agrees.
+# 2. Then REPS rounds; in each round every code runs once on 1 and on 2 ranks (LAMMPS and
+#    LIGGGHTS: MPI ranks, OMP_NUM_THREADS=1; kolsky: OpenMP threads), alternated so that a
+#    slow phase of the machine hits all codes alike. Each run times the same TIMED steps after
+#    WARMUP untimed ones: LAMMPS' and LIGGGHTS' "Loop time" of the timed `run`, kolsky's wall
+#    time over the same steps. particle-steps/s = grains x TIMED / loop time.
+# 3. Medians per code and rank count, the ratio of the medians and the median of the per-round
+#    ratios; a table, and OUT.json (default benchmarks/results/<yyyymmdd>_<commit>_lammps.json,
+#    the format bench-summary reads: context, runs, summary; plus agreement and ratios).
 #
 # Environment (all optional):
-#   LMP        LAMMPS binary (default: the first of lmp, lmp_serial, lmp_mpi, lmp_stable in PATH)
-#   PACK       packing (default ../shared/bench/pack_35k.data.gz next to the repository)
-#   REPS       runs per configuration (3)         WARMUP / TIMED  steps (100 / 793)
-#   MPI_RANKS  ranks of the parallel runs (2; 0 or 1 = single core only)
-#   STYLES     inputs to run ("hertz_history granular")
-#   MPIRUN     MPI launcher (mpirun)
-# Exit status: 0 done, 2 LAMMPS, its GRANULAR package or the packing missing, 1 a run failed.
+#   PACK      packing (../shared/bench/pack_35k.data.gz next to the repository)
+#   REPS      rounds (3)              WARMUP / TIMED  steps (100 / 793)
+#   RANKS     rank / thread counts ("1 2")
+#   CODES     codes to time ("kolsky hertz_history granular liggghts")
+#   TOL, ZTOL agreement tolerances (agreement.sh: 0.05, 0.05)
+#   MPIRUN    MPI launcher (mpirun); LMP, LIGGGHTS, KOLSKY_BUILD, KOLSKY: binaries (common.sh)
+# Exit status: 0 done, 2 a binary or the packing missing, 1 a run failed.
 set -euo pipefail
 
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 root=$(cd "$here/../.." && pwd)
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+source "$here/common.sh"
 
 REPS=${REPS:-3}
 WARMUP=${WARMUP:-100}
 TIMED=${TIMED:-793}
-MPI_RANKS=${MPI_RANKS:-2}
-STYLES=${STYLES:-"hertz_history granular"}
-MPIRUN=${MPIRUN:-mpirun}
+RANKS=${RANKS:-"1 2"}
+CODES=${CODES:-"kolsky hertz_history granular liggghts"}
 PACK=${PACK:-"$root/../shared/bench/pack_35k.data.gz"}
-out=${1:-"$root/benchmarks/results/$(date +%Y%m%d)_lammps.json"}
+commit=$(git -C "$root" rev-parse --short=12 HEAD 2>/dev/null || echo unknown)
+out=${1:-"$root/benchmarks/results/$(date +%Y%m%d)_${commit}_lammps.json"}
 
-die() { echo "run.sh: $*" >&2; exit "${code:-2}"; }
+find_peers
+find_kolsky
+prepare_data "$PACK"
+peers=$(tr ' ' '\n' <<<"$CODES" | grep -v '^kolsky$' | paste -sd' ' - || true)
+command -v "${MPIRUN:-mpirun}" >/dev/null 2>&1 || RANKS=1
 
-# --- LAMMPS --------------------------------------------------------------------------------------
-if [[ -z "${LMP:-}" ]]; then
-  for c in lmp lmp_serial lmp_mpi lmp_stable; do
-    if command -v "$c" >/dev/null 2>&1; then LMP=$c; break; fi
-  done
-fi
-[[ -n "${LMP:-}" ]] && command -v "$LMP" >/dev/null 2>&1 ||
-  die "LAMMPS not found (tried lmp, lmp_serial, lmp_mpi, lmp_stable; set LMP=...).
-  It is optional and not part of the project's install script; on Debian/Ubuntu:
-  apt-get install -y lammps"
-LMP=$(command -v "$LMP")
-help=$("$LMP" -h 2>/dev/null || true)
-for s in gran/hertz/history granular wall/gran nve/sphere; do
-  grep -qw -- "$s" <<<"$help" || die "$LMP lacks the style '$s' (needs the GRANULAR package)"
-done
-version=$(grep -m1 -o 'Simulator - .*' <<<"$help" | sed 's/^Simulator - //' || true)
+# --- 1. agreement ---------------------------------------------------------------------------------
+echo "== agreement (untimed; agreement.sh)"
+CODES="$peers" PACK="$PACK" WARMUP="$WARMUP" TIMED="$TIMED" \
+  "$here/agreement.sh" "$tmp/agreement.tsv" && agree_status=0 || agree_status=$?
+[[ $agree_status -eq 0 || $agree_status -eq 3 ]] || code=1 die "agreement.sh failed"
+agrees() { awk -F'\t' -v c="$1" '$1 == c && $2 == "agrees" { f = 1 } END { exit !f }' \
+             "$tmp/agreement.tsv.verdicts"; }
 
-# --- packing -------------------------------------------------------------------------------------
-[[ -r "$PACK" ]] || die "packing not found: $PACK
-  (the shared benchmark packing pack_35k.data.gz; set PACK=... to point at it)"
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-data="$tmp/pack.data"
-case "$PACK" in
-  *.gz) gzip -dc "$PACK" >"$data" ;;
-  *) cp "$PACK" "$data" ;;
-esac
-# read_data needs a LAMMPS header (count, types, box) and an Atoms section; the shared file has
-# them. A bare list of `id type diameter density x y z` rows gets one here (box = rows' extent
-# plus 0.5 mm).
-if ! head -n 40 "$data" | grep -qE '^[[:space:]]*[0-9]+[[:space:]]+atoms' ||
-   ! grep -qE '^Atoms' "$data"; then
-  awk 'NF == 7 && $1 ~ /^[0-9]+$/ {
-         n++; r = $3 / 2
-         if (n == 1) { xl = $5 - r; xh = $5 + r; yl = $6 - r; yh = $6 + r; zl = $7 - r; zh = $7 + r }
-         if ($5 - r < xl) xl = $5 - r; if ($5 + r > xh) xh = $5 + r
-         if ($6 - r < yl) yl = $6 - r; if ($6 + r > yh) yh = $6 + r
-         if ($7 - r < zl) zl = $7 - r; if ($7 + r > zh) zh = $7 + r
-         rows[n] = $0 }
-       END { m = 5e-4
-         print "header added by benchmarks/lammps/run.sh\n"
-         printf "%d atoms\n1 atom types\n\n", n
-         printf "%.10e %.10e xlo xhi\n%.10e %.10e ylo yhi\n%.10e %.10e zlo zhi\n\nAtoms # sphere\n\n",
-                xl - m, xh + m, yl - m, yh + m, zl - m, zh + m
-         for (i = 1; i <= n; i++) print rows[i] }' "$data" >"$data.new"
-  mv "$data.new" "$data"
-  echo "note: $PACK had no LAMMPS header; added one" >&2
-fi
-natoms=$(grep -m1 -E '^[[:space:]]*[0-9]+[[:space:]]+atoms' "$data" | awk '{print $1}')
-pack_sha=$(sha256sum "$PACK" | awk '{print $1}')
-
-# --- configurations ------------------------------------------------------------------------------
-ranks_list=(1)
-if [[ "$MPI_RANKS" -gt 1 ]]; then
-  if command -v "$MPIRUN" >/dev/null 2>&1; then
-    ranks_list+=("$MPI_RANKS")
-    if [[ $(id -u) -eq 0 ]]; then  # Open MPI refuses root without these
-      export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
-    fi
-  else
-    echo "note: $MPIRUN not found: single-core runs only" >&2
-  fi
-fi
-
+# --- 2. alternated timed rounds ---------------------------------------------------------------------
 load_start=$(cut -d' ' -f1-3 /proc/loadavg 2>/dev/null || echo "")
 ncpu=$(nproc 2>/dev/null || echo 0)
 cpu_model=$(grep -m1 'model name' /proc/cpuinfo 2>/dev/null | sed 's/.*: //' || true)
 if [[ -n "$load_start" ]] && awk -v l="${load_start%% *}" 'BEGIN { exit !(l > 0.5) }'; then
   echo "note: load average $load_start at start: other work shares the CPUs, timings will be low" >&2
 fi
-echo "LAMMPS ${version:-?} ($LMP), $natoms grains, $WARMUP warm-up + $TIMED timed steps, $REPS runs each"
-
-export OMP_NUM_THREADS=1
+echo "== timing: $natoms grains, $WARMUP warm-up + $TIMED timed steps, $REPS rounds of: $CODES on ranks/threads $RANKS"
 results="$tmp/results.tsv"
 : >"$results"
-printf '%-14s %5s %4s %12s %14s %12s %7s %8s\n' style ranks run loop_s particle_steps/s pair_s builds neigh/at
-for style in $STYLES; do
-  input="$here/in.compaction_$style"
-  [[ -r "$input" ]] || die "no input $input"
-  for ranks in "${ranks_list[@]}"; do
-    for rep in $(seq 1 "$REPS"); do
-      log="$tmp/$style.$ranks.$rep.log"
-      launch=("$LMP")
-      [[ "$ranks" -gt 1 ]] && launch=("$MPIRUN" -np "$ranks" "$LMP")
-      if ! (cd "$tmp" && "${launch[@]}" -nocite -echo none -screen none -log "$log" \
-              -in "$input" -var data "$data" -var warmup "$WARMUP" -var timed "$TIMED" \
-              >"$tmp/stdout" 2>&1); then
-        cat "$tmp/stdout" >&2
-        tail -n 20 "$log" >&2 2>/dev/null || true
-        code=1 die "LAMMPS failed: $style, $ranks rank(s), run $rep"
+dates=()
+printf '%-14s %5s %4s %10s %14s %9s %7s %8s\n' code ranks run loop_s particle_steps/s pair_s builds neigh/at
+for rep in $(seq 1 "$REPS"); do
+  dates+=("$(date -Iseconds)")
+  for ranks in $RANKS; do
+    for c in $CODES; do
+      log="$tmp/$c.$ranks.$rep.log"
+      if [[ "$c" == kolsky ]]; then
+        OMP_NUM_THREADS=$ranks "$KOLSKY" --pack "$PACK" --dt 3.78e-8 --threads "$ranks" \
+          --steps "$WARMUP,$((WARMUP + TIMED))" >"$log" || code=1 die "kolsky failed ($log)"
+        read -r loop steps atoms < <(awk '/^# loop/ { print $3, $6, $9 }' "$log")
+        pair=null builds=null neigh=null
+      else
+        run_peer "$c" "$ranks" "$log" -var warmup "$WARMUP" -var timed "$TIMED"
+        read -r loop steps atoms < <(loop_time "$log")
+        # Pair time: LAMMPS "Pair | min | avg | ...", LIGGGHTS "Pair  time (%) = T (P)".
+        pair=$(awk -F'|' '/^Pair +\|/ { gsub(/ /, "", $3); p = $3 }
+                          /^Pair +time/ { split($0, a, "= "); split(a[2], b, " "); p = b[1] }
+                          END { print (p == "" ? "null" : p) }' "$log")
+        builds=$(awk '/Neighbor list builds/ { b = $NF } END { print (b == "" ? "null" : b) }' "$log")
+        neigh=$(awk '/Ave neighs\/atom/ { n = $NF } END { print (n == "" ? "null" : n) }' "$log")
       fi
-      # "Loop time of T on P procs for S steps with N atoms" of the last (timed) run
-      read -r loop steps atoms < <(grep '^Loop time of' "$log" | tail -n 1 | awk '{print $4, $9, $12}')
-      [[ "$steps" == "$TIMED" ]] || code=1 die "unexpected log (timed run has $steps steps): $log"
-      pair=$(grep -E '^Pair +\|' "$log" | tail -n 1 | awk -F'|' '{gsub(/ /, "", $3); print $3}')
-      builds=$(grep 'Neighbor list builds' "$log" | tail -n 1 | awk '{print $NF}')
-      neigh=$(grep 'Ave neighs/atom' "$log" | tail -n 1 | awk '{print $NF}')
+      [[ "$steps" == "$TIMED" ]] || code=1 die "unexpected log (timed part has $steps steps): $log"
       pss=$(awk -v n="$atoms" -v s="$steps" -v t="$loop" 'BEGIN { printf "%.6e", n * s / t }')
-      printf '%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\n' "$style" "$ranks" "$rep" "$loop" "$pss" "$pair" \
-        "$builds" "$neigh" >>"$results"
-      printf '%-14s %5s %4s %12.4f %14.4g %12.4f %7s %8.3f\n' "$style" "$ranks" "$rep" "$loop" \
-        "$pss" "$pair" "$builds" "$neigh"
+      printf '%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\n' "$c" "$ranks" "$rep" "$loop" "$pss" "${pair:-null}" \
+        "${builds:-null}" "${neigh:-null}" >>"$results"
+      printf '%-14s %5s %4s %10.4f %14.4g %9s %7s %8s\n' "$c" "$ranks" "$rep" "$loop" "$pss" \
+        "${pair:-}" "${builds:-}" "${neigh:-}"
     done
   done
 done
+load_end=$(cut -d' ' -f1-3 /proc/loadavg 2>/dev/null || echo "")
 
-# --- medians -------------------------------------------------------------------------------------
+# --- 3. medians and ratios --------------------------------------------------------------------------
 median() { sort -g | awk '{ v[NR] = $1 } END { if (NR % 2) print v[(NR + 1) / 2];
                                                else printf "%.6e\n", (v[NR / 2] + v[NR / 2 + 1]) / 2 }'; }
+rate() { awk -F'\t' -v c="$1" -v r="$2" -v k="${3:-}" '$1 == c && $2 == r && (k == "" || $3 == k) { print $5 }' "$results"; }
 echo
-printf '%-14s %5s %16s %16s\n' style ranks median_psteps/s per_rank
+printf '%-14s %5s %16s %16s %8s\n' code ranks median_psteps/s per_rank spread
 summary=()
-for style in $STYLES; do
-  for ranks in "${ranks_list[@]}"; do
-    med=$(awk -F'\t' -v s="$style" -v r="$ranks" '$1 == s && $2 == r { print $5 }' "$results" | median)
-    medloop=$(awk -F'\t' -v s="$style" -v r="$ranks" '$1 == s && $2 == r { print $4 }' "$results" | median)
+for c in $CODES; do
+  for ranks in $RANKS; do
+    med=$(rate "$c" "$ranks" | median)
+    medloop=$(awk -F'\t' -v c="$c" -v r="$ranks" '$1 == c && $2 == r { print $4 }' "$results" | median)
+    lo=$(rate "$c" "$ranks" | sort -g | head -n 1); hi=$(rate "$c" "$ranks" | sort -g | tail -n 1)
     per=$(awk -v m="$med" -v r="$ranks" 'BEGIN { printf "%.6e", m / r }')
-    printf '%-14s %5s %16.4g %16.4g\n' "$style" "$ranks" "$med" "$per"
-    summary+=("{\"style\": \"$style\", \"ranks\": $ranks, \"median_loop_time_s\": $medloop, \"median_particle_steps_per_s\": $med, \"median_particle_steps_per_s_per_rank\": $per}")
+    printf '%-14s %5s %16.4g %16.4g %s-%s\n' "$c" "$ranks" "$med" "$per" \
+      "$(awk -v x="$lo" 'BEGIN { printf "%.3g", x / 1e6 }')" "$(awk -v x="$hi" 'BEGIN { printf "%.3gM", x / 1e6 }')"
+    summary+=("{\"style\": \"$c\", \"ranks\": $ranks, \"median_loop_time_s\": $medloop, \"median_particle_steps_per_s\": $med, \"median_particle_steps_per_s_per_rank\": $per, \"min_particle_steps_per_s\": $lo, \"max_particle_steps_per_s\": $hi}")
   done
 done
-load_end=$(cut -d' ' -f1-3 /proc/loadavg 2>/dev/null || echo "")
+echo
+ratios=()
+if [[ " $CODES " == *" kolsky "* ]]; then
+  printf '%-14s %5s %16s %22s\n' "kolsky / peer" ranks ratio_of_medians "median_per_round (range)"
+  for p in $peers; do
+    for ranks in $RANKS; do
+      if ! agrees "$p"; then
+        printf '%-14s %5s %s\n' "$p" "$ranks" "not reported: its forces disagree with kolsky's (agreement above)"
+        ratios+=("{\"peer\": \"$p\", \"ranks\": $ranks, \"agrees\": false}")
+        continue
+      fi
+      rm_=$(awk -v a="$(rate kolsky "$ranks" | median)" -v b="$(rate "$p" "$ranks" | median)" 'BEGIN { printf "%.4f", a / b }')
+      per_round=$(for rep in $(seq 1 "$REPS"); do
+        awk -v a="$(rate kolsky "$ranks" "$rep")" -v b="$(rate "$p" "$ranks" "$rep")" 'BEGIN { printf "%.4f\n", a / b }'; done)
+      rr=$(median <<<"$per_round")
+      rlo=$(sort -g <<<"$per_round" | head -n 1); rhi=$(sort -g <<<"$per_round" | tail -n 1)
+      printf '%-14s %5s %16s %22s\n' "$p" "$ranks" "x$rm_" "x$rr ($rlo-$rhi)"
+      ratios+=("{\"peer\": \"$p\", \"ranks\": $ranks, \"agrees\": true, \"ratio_of_medians\": $rm_, \"median_per_round_ratio\": $rr, \"min_per_round_ratio\": $rlo, \"max_per_round_ratio\": $rhi}")
+    done
+  done
+fi
 echo "load average: start $load_start, end $load_end (on $ncpu CPUs)"
 
-# --- JSON ----------------------------------------------------------------------------------------
-json_list() { local IFS=,; echo "$*"; }
-runs=()
-while IFS=$'\t' read -r style ranks rep loop pss pair builds neigh; do
-  runs+=("{\"style\": \"$style\", \"ranks\": $ranks, \"run\": $rep, \"loop_time_s\": $loop, \"particle_steps_per_s\": $pss, \"pair_time_s\": $pair, \"neighbor_builds\": $builds, \"ave_neighs_per_atom\": $neigh}")
-done <"$results"
-mkdir -p "$(dirname "$out")"
+# --- 4. JSON ------------------------------------------------------------------------------------------
+json_array() { local i sep; for i in "${!ARR[@]}"; do sep=,; [[ $i -eq $((${#ARR[@]} - 1)) ]] && sep=
+                 echo "    ${ARR[$i]}$sep"; done; }
 loadjson() { [[ -n "$1" ]] && echo "[${1// /, }]" || echo "null"; }
+runs=()
+while IFS=$'\t' read -r c ranks rep loop pss pair builds neigh; do
+  runs+=("{\"style\": \"$c\", \"ranks\": $ranks, \"run\": $rep, \"loop_time_s\": $loop, \"particle_steps_per_s\": $pss, \"pair_time_s\": $pair, \"neighbor_builds\": $builds, \"ave_neighs_per_atom\": $neigh}")
+done <"$results"
+agreement=()
+while IFS=$'\t' read -r c step lid bot tube z; do
+  agreement+=("{\"code\": \"$c\", \"step\": $step, \"lid_N\": $lid, \"bottom_N\": $bot, \"tube_N\": $tube, \"coordination\": $z}")
+done <"$tmp/agreement.tsv"
+verdicts=()
+while IFS=$'\t' read -r c v ml mt mz; do
+  verdicts+=("{\"peer\": \"$c\", \"verdict\": \"$v\", \"max_rel_lid\": $ml, \"max_rel_tube\": $mt, \"max_abs_coordination\": $mz}")
+done <"$tmp/agreement.tsv.verdicts"
+mkdir -p "$(dirname "$out")"
 {
   echo "{"
   echo "  \"context\": {"
-  echo "    \"date\": \"$(date -Iseconds)\","
+  echo "    \"date\": \"${dates[0]}\","
+  echo "    \"dates\": [$(printf '"%s",' "${dates[@]}" | sed 's/,$//')],"
   echo "    \"host_name\": \"$(hostname)\","
   echo "    \"num_cpus\": $ncpu,"
   echo "    \"cpu_model\": \"$cpu_model\","
   echo "    \"load_avg_start\": $(loadjson "$load_start"),"
   echo "    \"load_avg_end\": $(loadjson "$load_end"),"
-  echo "    \"lammps_version\": \"$version\","
+  echo "    \"commit\": \"$commit\","
+  echo "    \"lammps_version\": \"$lmp_version\","
   echo "    \"lammps_binary\": \"$LMP\","
+  echo "    \"liggghts_version\": \"$liggghts_version\","
+  echo "    \"liggghts_binary\": \"$LIGGGHTS\","
+  echo "    \"kolsky_binary\": \"$KOLSKY\","
   echo "    \"omp_num_threads\": 1,"
+  echo "    \"ranks_note\": \"ranks = MPI ranks for LAMMPS and LIGGGHTS (OMP_NUM_THREADS=1), OpenMP threads for kolsky\","
   echo "    \"packing\": \"$PACK\","
   echo "    \"packing_sha256\": \"$pack_sha\","
   echo "    \"grains\": $natoms,"
@@ -183,21 +181,18 @@ loadjson() { [[ -n "$1" ]] && echo "[${1// /, }]" || echo "null"; }
   echo "    \"timed_steps\": $TIMED,"
   echo "    \"timestep_s\": 3.78e-8,"
   echo "    \"reps\": $REPS,"
-  echo "    \"inputs\": \"benchmarks/lammps/in.compaction_{$(json_list $STYLES)}\","
+  echo "    \"order\": \"alternated: each round runs every code once per rank count\","
+  echo "    \"inputs\": \"benchmarks/lammps/in.compaction_{hertz_history,granular,liggghts}, benchmarks/dem_agreement.cpp\","
   echo "    \"peer_figures_quoted_in_issue\": {\"hertz_history\": 4.2e6, \"granular\": 3.2e6, \"note\": \"particle-steps/s, single core, same machine class\"}"
   echo "  },"
-  echo "  \"runs\": ["
-  for i in "${!runs[@]}"; do
-    sep=,; [[ $i -eq $((${#runs[@]} - 1)) ]] && sep=
-    echo "    ${runs[$i]}$sep"
-  done
-  echo "  ],"
-  echo "  \"summary\": ["
-  for i in "${!summary[@]}"; do
-    sep=,; [[ $i -eq $((${#summary[@]} - 1)) ]] && sep=
-    echo "    ${summary[$i]}$sep"
-  done
-  echo "  ]"
+  echo "  \"runs\": ["; ARR=("${runs[@]}"); json_array; echo "  ],"
+  echo "  \"summary\": ["; ARR=("${summary[@]}"); json_array; echo "  ],"
+  echo "  \"ratios\": ["; ARR=("${ratios[@]+"${ratios[@]}"}"); [[ ${#ARR[@]} -gt 0 ]] && json_array; echo "  ],"
+  echo "  \"agreement\": {"
+  echo "    \"tolerance\": {\"lid_and_tube_relative\": ${TOL:-0.05}, \"coordination_absolute\": ${ZTOL:-0.05}, \"reason\": \"benchmarks/lammps/README.md, Agreement\"},"
+  echo "    \"verdicts\": ["; ARR=("${verdicts[@]}"); json_array | sed 's/^/  /'; echo "    ],"
+  echo "    \"rows\": ["; ARR=("${agreement[@]}"); json_array | sed 's/^/  /'; echo "    ]"
+  echo "  }"
   echo "}"
 } >"$out"
 echo "wrote $out"
