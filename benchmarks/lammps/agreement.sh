@@ -23,12 +23,7 @@
 #   LMP, LIGGGHTS, KOLSKY_BUILD, KOLSKY   binaries (common.sh)
 # Exit status: 0 every peer agrees, 3 one does not, 2 something missing, 1 a run failed.
 set -euo pipefail
-
-here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
-root=$(cd "$here/../.." && pwd)
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-source "$here/common.sh"
+source "$(dirname "${BASH_SOURCE[0]}")/common.sh"  # sets here, root, tmp (removed on exit)
 
 PACK=${PACK:-"$root/../shared/bench/pack_35k.data.gz"}
 WARMUP=${WARMUP:-100}

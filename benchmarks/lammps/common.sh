@@ -1,6 +1,12 @@
 # Shared by run.sh and agreement.sh (sourced, not run): the peer binaries, the packing copies
-# the decks read, and the parsing of their thermo output. Expects $here (this folder), $root
-# (the repository) and $tmp (a scratch folder) to be set, and `set -euo pipefail`.
+# the decks read, and the parsing of their thermo output. Sets $here (this folder), $root (the
+# repository) and $tmp (a scratch folder, removed when the script exits); the scripts set
+# `set -euo pipefail` before sourcing it.
+
+here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
+root=$(cd "$here/../.." && pwd)
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
 
 die() { echo "${0##*/}: $*" >&2; exit "${code:-2}"; }
 

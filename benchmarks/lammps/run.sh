@@ -25,12 +25,7 @@
 #   MPIRUN    MPI launcher (mpirun); LMP, LIGGGHTS, KOLSKY_BUILD, KOLSKY: binaries (common.sh)
 # Exit status: 0 done, 2 a binary or the packing missing, 1 a run failed.
 set -euo pipefail
-
-here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
-root=$(cd "$here/../.." && pwd)
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-source "$here/common.sh"
+source "$(dirname "${BASH_SOURCE[0]}")/common.sh"  # sets here, root, tmp (removed on exit)
 
 REPS=${REPS:-3}
 WARMUP=${WARMUP:-100}
@@ -100,7 +95,7 @@ load_end=$(cut -d' ' -f1-3 /proc/loadavg 2>/dev/null || echo "")
 
 # --- 3. medians and ratios --------------------------------------------------------------------------
 median() { sort -g | awk '{ v[NR] = $1 } END { if (NR % 2) print v[(NR + 1) / 2];
-                                               else printf "%.6e\n", (v[NR / 2] + v[NR / 2 + 1]) / 2 }'; }
+                                               else printf "%.6g\n", (v[NR / 2] + v[NR / 2 + 1]) / 2 }'; }
 rate() { awk -F'\t' -v c="$1" -v r="$2" -v k="${3:-}" '$1 == c && $2 == r && (k == "" || $3 == k) { print $5 }' "$results"; }
 echo
 printf '%-14s %5s %16s %16s %8s\n' code ranks median_psteps/s per_rank spread
