@@ -37,7 +37,8 @@ find_peers() {
     grep -qw -- "$s" <<<"$help" || die "$LMP lacks the style '$s' (needs the GRANULAR package)"
   done
   lmp_version=$(grep -m1 -o 'Simulator - .*' <<<"$help" | sed 's/^Simulator - //' || true)
-  liggghts_version=$("$LIGGGHTS" -h 2>/dev/null | grep -m1 -o 'Version [^,]*' || true)
+  # From $tmp: LIGGGHTS writes log.liggghts into its working folder even for -h.
+  liggghts_version=$(cd "$tmp" && "$LIGGGHTS" -h 2>/dev/null | grep -m1 -o 'Version [^,]*' || true)
 }
 
 # kolsky's side: build/benchmarks/dem_agreement (KOLSKY_BUILD, default <repo>/build).
