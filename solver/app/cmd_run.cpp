@@ -59,7 +59,7 @@ io::RunRecord to_record(const scene::Scene& sc, const shpb::RunResult& r,
       {"analysis_dissipation_percent", &h.dissipation_percent}};
   const char* units[] = {"1", "1/s", "Pa", "Pa", "Pa", "1", "%"};
   for (size_t k = 0; k < std::size(analysed); ++k)
-    if (analysed[k].second->size() == t.size())
+    if (!t.empty() && analysed[k].second->size() == t.size())
       rec.probes.push_back({analysed[k].first, units[k], t, *analysed[k].second});
   return rec;
 }
@@ -191,7 +191,11 @@ int cmd_run(const std::vector<std::string>& args) {
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
   // Bars: the wave analysis of the face waves; strain-rate walls: the direct one (no waves).
-  const shpb::RunAnalysis analysis = sim->analyse(r);
+  // A run stopped by a numerical failure before the analysis has its two samples (the
+  // incident wave not yet at the specimen) is written without one: its probes and failure
+  // are the result, and the analysis of too short a record must not replace them.
+  const bool analysed = r.complete || sim->can_analyse(r);
+  const shpb::RunAnalysis analysis = analysed ? sim->analyse(r) : shpb::RunAnalysis{};
   const auto summary = summarize(analysis.waves, analysis.history);
   io::RunRecord rec = to_record(sc, r, analysis.history, summary);
   if (resume) rec.meta["restarted_from"] = o.restart;
@@ -222,7 +226,10 @@ int cmd_run(const std::vector<std::string>& args) {
   std::printf("  %-26s %ld\n  %-26s %.6g\n  %-26s %.3g\n", "steps", r.steps, "dt_s", r.dt,
               "wall_time_s", wall);
   std::fputs(format_summary(summary).c_str(), stdout);
-  if (!o.plot_dir.empty()) write_plots(plot::run_figures(r, analysis.waves, analysis.history, file), o.plot_dir, gnuplot, "run");
+  if (!o.plot_dir.empty() && analysed)
+    write_plots(plot::run_figures(r, analysis.waves, analysis.history, file), o.plot_dir, gnuplot, "run");
+  else if (!o.plot_dir.empty())
+    std::fprintf(stderr, "kolsky run: no plots: the run stopped before the analysis had two samples\n");
   if (!r.complete) {
     std::fprintf(stderr, "kolsky: numerical failure: %s; output kept in %s, marked incomplete\n",
                  r.failure.c_str(), out.c_str());

@@ -158,6 +158,12 @@ RunAnalysis SimulatedShpb::analyse(const RunResult& r) const {
   return a;
 }
 
+bool SimulatedShpb::can_analyse(const RunResult& r) const {
+  if (direct_analysis()) return r.t.size() >= 2;
+  const AnalysisSetup setup = analysis_setup();
+  return r.face_waves(setup.incident.youngs_modulus, setup.transmission.youngs_modulus).t.size() >= 2;
+}
+
 RunResult SimulatedShpb::run(Progress* progress, const RunControl& control) {
   // One dispatch per run: the loop below is compiled for each assembly type.
   return std::visit([&](auto& a) { return run_on(a, progress, control); }, assembly_);

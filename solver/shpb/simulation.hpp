@@ -76,6 +76,9 @@ class SimulatedShpb {
   /// stresses (analyze_faces; waves empty, no wave energies). std::invalid_argument from the
   /// wave analysis when fewer than 2 wave samples exist (a run stopped before the arrival).
   RunAnalysis analyse(const RunResult& r) const;
+  /// Whether analyse(r) has the 2 samples it needs (after the arrival, for the wave analysis).
+  /// A run stopped by a numerical failure before that has none: its probes are still kept.
+  bool can_analyse(const RunResult& r) const;
   /// Whether the run is analysed without waves (strain-rate walls: no bars, no gauges).
   bool direct_analysis() const;
   /// The probes run() records, in its order (the HDF5 order), with empty values.

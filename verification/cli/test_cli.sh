@@ -73,7 +73,22 @@ blow_up)
   expect_exit 3 "$kolsky" run u.json -o u.h5 --quiet
   grep -q "numerical failure" err.txt || fail "no failure message"
   [ -s u.h5 ] || fail "incomplete output not kept"; no_temp_files
-  h5dump -a /meta/complete u.h5 | grep -q "(0): 0" || fail "incomplete run not marked" ;;
+  h5dump -a /meta/complete u.h5 | grep -q "(0): 0" || fail "incomplete run not marked"
+  # A failure before the incident wave reaches the specimen (nothing to analyse yet) is still a
+  # numerical failure: exit 3, the check that fired named, the probes so far kept, complete = 0.
+  scene big.json ""; sed -i 's/"amplitude": 50e6/"amplitude": 1e308/' big.json
+  expect_exit 3 "$kolsky" run big.json -o big.h5 --quiet --gauges-csv big.csv
+  grep -q "numerical failure: .*non-finite" err.txt || fail "early failure message: $(cat err.txt)"
+  grep -q "internal error" err.txt && fail "early failure reported as internal: $(cat err.txt)"
+  [ -s big.h5 ] && [ -e big.csv ] || fail "early failure output not kept: $(ls)"; no_temp_files
+  h5dump -a /meta/complete big.h5 | grep -q "(0): 0" || fail "early failure not marked incomplete"
+  h5dump -H -d /probes/applied_stress/value big.h5 >/dev/null || fail "probes of an early failure missing"
+  # A sphere chain stepped above its contact limit blows up inside the incident bar.
+  scene chain.json ', "dt": 3e-6, "check_stability": false'
+  sed -i 's/"bars": {/"bars": {"kind": "sphere_chain", /' chain.json
+  expect_exit 3 "$kolsky" run chain.json -o chain.h5 --quiet
+  grep -q "numerical failure" err.txt || fail "chain blow-up message: $(cat err.txt)"
+  h5dump -a /meta/complete chain.h5 | grep -q "(0): 0" || fail "chain blow-up not marked incomplete" ;;
 analyze)
   ex=$repo/data/examples
   expect_exit 0 "$kolsky" analyze "$ex/gauges_song2009_example.csv" --bars "$ex/bars_song2009.json" -o a.csv
