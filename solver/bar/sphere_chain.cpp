@@ -95,10 +95,7 @@ double SphereChainBar::face_kinetic_energy() const {
 double SphereChainBar::internal_energy() const {
   double e = 0.0;
   const double m = props_.ball_mass;
-  for (size_t i = 0; i < v_.size(); ++i) {
-    const double vm = 0.5 * (v_[i] + v_prev_[i]);
-    e += 0.5 * m * vm * vm;
-  }
+  for (size_t i = 0; i < v_.size(); ++i) e += 0.5 * m * v_prev_[i] * v_[i];  // see the header
   for (double f : f_contact_) e += 0.5 * f * f / props_.contact_stiffness;
   return e;
 }
