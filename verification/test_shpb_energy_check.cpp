@@ -6,7 +6,9 @@
 //    energy left (omega dt)^2 / 8 of the chain's energy (-0.02 J "delivered" before the wave
 //    reached the specimen, and the check fired at 0.58 ms);
 //  - steps 1.05 x above the limit are still caught by the energy check, before the state
-//    overflows, for characteristic bars and for sphere chains with a column between them.
+//    overflows, for characteristic bars and for sphere chains with a column between them;
+//  - time.check_stability = false lifts that check with the dt limit: such a run is stopped
+//    only when its values overflow.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -94,6 +96,25 @@ TEST(ShpbEnergyCheck, StepsAboveTheLimitAreCaughtByTheEnergyCheck) {
   for (const char* kind : {"characteristic", "sphere_chain"}) {
     const std::string what = run_above_limit(spec_of(bars_scene(kind, pulse, 1e-3), "."), 1.05);
     EXPECT_NE(what.find("energy grows"), std::string::npos) << kind << ": " << what;
+  }
+}
+
+TEST(ShpbEnergyCheck, CheckStabilityFalseLiftsTheDtLimitAndTheEnergyCheck) {
+  // time.check_stability = false: 1.5 x the limit is planned, no energy check stops it, and
+  // the unstable step runs until the state overflows, which the finiteness check stops.
+  const json pulse = {{"kind", "trapezoid"}, {"amplitude", 50e6}, {"rise_time", 20e-6},
+                      {"duration", 100e-6}, {"fall_time", 20e-6}};
+  for (const char* kind : {"characteristic", "sphere_chain"}) {
+    json j = bars_scene(kind, pulse, 2e-3);
+    const double limit = shpb::SimulatedShpb(spec_of(j, ".")).schedule().stable_dt;
+    j["time"]["dt"] = 1.5 * limit;  // 1.05 x grows too slowly to overflow a sphere chain in 2 ms
+    j["time"]["check_stability"] = false;
+    shpb::SimulatedShpb sim(spec_of(j, "."));
+    const shpb::RunResult r = sim.run();
+    EXPECT_FALSE(r.complete) << kind;
+    EXPECT_NE(r.failure.find("non-finite"), std::string::npos) << kind << ": " << r.failure;
+    j["time"]["check_stability"] = true;  // and the same dt is refused at planning otherwise
+    EXPECT_THROW(shpb::SimulatedShpb(spec_of(j, ".")), InputError) << kind;
   }
 }
 

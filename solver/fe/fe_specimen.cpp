@@ -203,7 +203,7 @@ void FeSpecimen::advance(double dt) {
   constexpr long kWarmupSteps = 16;
   // Judged against the peak energy, or the floor (a 1e-9 strain of the whole specimen) while
   // the energies are still at round-off level.
-  if (n_steps_ > kWarmupSteps)
+  if (p_.check_energy && n_steps_ > kWarmupSteps)
     check_energy_growth({e.held(), e.face_work + e.initial_kinetic,
                          std::max(peak_energy_, energy_floor_ / p_.energy_tolerance)},
                         p_.energy_tolerance, "fe specimen", body_.time());

@@ -65,6 +65,9 @@ struct FeSpecimenParams {
   double mass_damping = 0.0;       ///< c (1/s) of c*M*v; 0 for SHPB runs, > 0 for static checks
   double energy_tolerance = 0.05;  ///< |balance error| / peak energy that stops a run
   bool check_dt = true;            ///< throw when advance(dt) exceeds the current stable dt
+  /// Throw when the energy balance breaks (energy_tolerance). Off only with the run's
+  /// time.check_stability = false, to let an unstable step grow until it overflows.
+  bool check_energy = true;
   /// OpenMP threads for the element loop; results do not depend on it. 1 (serial) by default:
   /// on a loaded 2-core machine threads spin against other processes.
   int threads = 1;

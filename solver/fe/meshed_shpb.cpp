@@ -133,7 +133,7 @@ void MeshedShpb::step(double t, double dt) {
   peak_energy_ = std::max({peak_energy_, std::fabs(e.held()), std::fabs(e.applied_work)});
   constexpr long kWarmupSteps = 16;  // as FeSpecimen::advance
   const double tolerance = p_.specimen.energy_tolerance;
-  if (n_steps_ > kWarmupSteps)
+  if (p_.specimen.check_energy && n_steps_ > kWarmupSteps)
     check_energy_growth({e.held(), e.applied_work, std::max(peak_energy_, energy_check_floor(p_.specimen) / tolerance)},
                         tolerance, "meshed bars", body_.time());
 }

@@ -169,7 +169,10 @@ std::vector<ParamSpec> build_table() {
                 "Fraction of the models' raw stable time step used when dt = 0 (the run's only "
                 "safety factor; a DEM specimen's raw limit is the single-contact Rayleigh step)");
   s.add(VT::boolean, "time.check_stability", time.check_stability, "-", kNoRange,
-        "Stop on non-finite values or energy growth (false only to test the detector)");
+        "true: a time.dt above the stability limit is refused and a run stops on energy growth "
+        "or a step above a model's limit (exit 3); false lifts all of these, only to test that "
+        "an unstable step is stopped once its values overflow (non-finite values always stop a "
+        "run; the DEM engine always refuses a step above its grains' limit)");
   s.add_derived(VT::number, "time.energy_tolerance", "0.01; 0.05 for loading.kind = strain_rate",
                 "-", kPositive,
                 "Relative energy growth that counts as a blow-up (strain-rate walls judge against "

@@ -39,7 +39,9 @@ struct TimeSpec {
   /// Fraction of the assembly's raw stable dt the loop steps at: the one safety factor of a run
   /// (docs/architecture.md, "One time-step policy"); 0 = default_safety_factor(specimen).
   double safety_factor = 0.0;
-  bool check_stability = true;  ///< false only to exercise the blow-up detector
+  /// false lifts the dt limit (at planning and during the run, FE included) and the energy
+  /// checks, only to exercise the detector of last resort: non-finite values (exit 3).
+  bool check_stability = true;
   /// Relative energy growth that counts as a blow-up. Scenes with strain-rate walls default to
   /// kWallsEnergyTolerance instead (set it so when building such a spec by hand).
   double energy_tolerance = 0.01;

@@ -6,6 +6,7 @@
 
 #include "core/errors.hpp"
 #include "shpb/gauge_waves.hpp"
+#include "shpb/specimen_models.hpp"
 
 namespace kolsky::shpb {
 
@@ -22,7 +23,7 @@ fe::MeshedShpbParams meshed_params(const ExperimentSpec& spec) {
   if (spec.incident.gauges.empty() || spec.transmission.gauges.empty())
     throw InputError("", "bars.kind", "meshed bars need a gauge on each bar (the face waves come from them)");
   fe::MeshedShpbParams p;
-  p.specimen = *fe_params;
+  p.specimen = with_checks(*fe_params, spec.time.check_stability);
   p.incident = meshed_bar(spec.incident);
   p.transmission = meshed_bar(spec.transmission);
   p.bar_n_r = spec.bar_mesh.n_radial;

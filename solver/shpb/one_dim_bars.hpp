@@ -68,6 +68,7 @@ class OneDimBarsAssembly {
   BarKind kind_;
   bar::Pulse pulse_;
   double energy_tolerance_;
+  bool check_stability_;  // time.check_stability: the energy check is on
   Specimen specimen_;
   Bar incident_, transmission_;
   FaceForces forces_;

@@ -41,4 +41,11 @@ inline void add_model_probes(const fe::FeSpecimen&, ProbeRecords&) {}
 /// reference (probe_record.hpp, "Lifetime").
 void add_model_probes(const dem::DemSpecimen& d, ProbeRecords& out);
 
+/// The FE specimen's own step and energy checks as the run's time.check_stability sets them
+/// (1-D and meshed bars alike): false lifts both, as it lifts the loop's.
+inline fe::FeSpecimenParams with_checks(fe::FeSpecimenParams p, bool check_stability) {
+  p.check_dt = p.check_energy = check_stability;
+  return p;
+}
+
 }  // namespace kolsky::shpb

@@ -64,6 +64,7 @@ class StrainRateWallsAssembly {
  private:
   StrainRateHistory history_;
   double energy_tolerance_;
+  bool check_stability_;  // time.check_stability: the energy check is on
   dem::DemSpecimen specimen_;
   double length_, area_;       // L0 (m), pi R^2 (m^2)
   FaceState faces_;
