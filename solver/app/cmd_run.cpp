@@ -16,6 +16,7 @@
 
 #include "app/commands.hpp"
 #include "app/plot_output.hpp"
+#include "app/run_checks.hpp"
 #include "app/summary.hpp"
 #include "core/progress.hpp"
 #include "io/checkpoint_hdf5.hpp"
@@ -137,6 +138,7 @@ int cmd_run(const std::vector<std::string>& args) {
     std::fprintf(stderr, "kolsky run: %s: %ld steps of %.4g s (stable limit %.4g s)\n",
                  file.c_str(), sim->schedule().n_steps, sim->schedule().dt,
                  sim->schedule().stable_dt);
+  const nlohmann::json initial_wall_stress = report_initial_wall_stress(*sim, sc, o.quiet);
 
   // Checkpoint, restart and particle snapshots: hooks of the run loop (shpb::RunControl).
   shpb::RunControl control;
@@ -199,6 +201,7 @@ int cmd_run(const std::vector<std::string>& args) {
   const auto summary = summarize(analysis.waves, analysis.history);
   io::RunRecord rec = to_record(sc, r, analysis.history, summary);
   if (resume) rec.meta["restarted_from"] = o.restart;
+  if (!initial_wall_stress.is_null()) rec.meta["initial_wall_stress_pa"] = initial_wall_stress;
   if (snapshots) rec.meta["snapshots"] = io::snapshot_paths(out).first;
   io::write_run_hdf5(out, rec);
   if (snapshots) snapshots->finish(r.complete);  // kept, marked complete = 0, after a blow-up

@@ -1,5 +1,6 @@
 #include "bar/pulse.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -35,6 +36,19 @@ double end_time(const Pulse& p) {
     double operator()(const HalfSinePulse& q) const { return q.delay + q.duration; }
     double operator()(const TabulatedPulse& q) const {
       return q.delay + (q.table.empty() ? 0.0 : q.table.x.back());
+    }
+  } visitor;
+  return std::visit(visitor, p);
+}
+
+double peak_stress(const Pulse& p) {
+  struct {
+    double operator()(const TrapezoidPulse& q) const { return std::fabs(q.amplitude); }
+    double operator()(const HalfSinePulse& q) const { return std::fabs(q.amplitude); }
+    double operator()(const TabulatedPulse& q) const {
+      double m = 0.0;
+      for (double y : q.table.y) m = std::max(m, std::fabs(y));
+      return m * std::fabs(q.scale);
     }
   } visitor;
   return std::visit(visitor, p);

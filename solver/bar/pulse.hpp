@@ -42,5 +42,7 @@ using Pulse = std::variant<TrapezoidPulse, HalfSinePulse, TabulatedPulse>;
 double evaluate(const Pulse& p, double t);
 /// Time after which the pulse is identically zero (s).
 double end_time(const Pulse& p);
+/// Largest |stress| of the pulse (Pa): the amplitude, or the table's largest |stress| x scale.
+double peak_stress(const Pulse& p);
 
 }  // namespace kolsky::bar

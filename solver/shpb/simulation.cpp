@@ -98,6 +98,15 @@ std::vector<Probe> SimulatedShpb::declared_probes() const {
   return std::visit([](const auto& a) { return empty_probes(a.probes()); }, assembly_);
 }
 
+std::optional<FaceForces> SimulatedShpb::initial_wall_stress() const {
+  const dem::DemSpecimen* d = nullptr;
+  if (const auto* a = std::get_if<OneDimBarsAssembly>(&assembly_)) d = std::get_if<dem::DemSpecimen>(&a->specimen());
+  if (const auto* w = std::get_if<StrainRateWallsAssembly>(&assembly_)) d = &w->specimen();
+  if (!d) return std::nullopt;
+  const FaceForces f = d->initial_forces();
+  return FaceForces{f.front / d->area(), f.back / d->area()};
+}
+
 const OneDimBarsAssembly& SimulatedShpb::one_dim(const char* accessor) const {
   if (const auto* a = std::get_if<OneDimBarsAssembly>(&assembly_)) return *a;
   throw std::logic_error(std::string("SimulatedShpb::") + accessor +

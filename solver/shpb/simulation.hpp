@@ -83,6 +83,10 @@ class SimulatedShpb {
   bool direct_analysis() const;
   /// The probes run() records, in its order (the HDF5 order), with empty values.
   std::vector<Probe> declared_probes() const;
+  /// A DEM specimen's end-wall stresses as packed, before any step (Pa, compression +): the
+  /// packing's residual or pre-stress, which the bars carry from t = 0 unless it sits on the
+  /// supports. nullopt for the other specimen models.
+  std::optional<FaceForces> initial_wall_stress() const;
 
   const ShpbAssembly& assembly() const { return assembly_; }
   /// The 1-D assembly's specimen and bars. Meshed bars and strain-rate walls have none: these

@@ -183,6 +183,20 @@ JSON
   grep -q "p.json: pulse: 'pulse' is unused with loading.kind = strain_rate" err.txt || fail "unused message: $(cat err.txt)"
   [ "$(wc -l < err.txt)" -eq 1 ] || fail "error is not one line"
   [ ! -e b.h5 ] || fail "output written for bad input"; no_temp_files ;;
+dem_checks)
+  # What a DEM scene is told before its run: the packing's initial wall stress, and a warning
+  # when it exceeds 5 % of the pulse (here 4 mm grains in an 8.2 mm tube: ~19 MPa of 20 MPa).
+  dem_scene d.json ""
+  expect_exit 0 "$kolsky" run d.json -o d.h5
+  grep -q "d.json: DEM packing: initial wall stress [0-9.e-]* MPa (front)" err.txt || fail "no initial stress: $(cat err.txt)"
+  grep -q "warning" err.txt && fail "warning for a 0.05 MPa packing: $(cat err.txt)"
+  h5dump -a /meta/meta_json d.h5 | grep -q "initial_wall_stress_pa" || fail "initial stress not in /meta"
+  printf 'diameter_m,percent_passing\n0.0038,0\n0.004,100\n' > coarse.csv
+  sed -e 's|"grain_size_curve": "[^"]*"|"grain_size_curve": "coarse.csv"|' -e 's/"upscale": 5, "seed": 7, "length": 0.006, "diameter": 0.008/"porosity": 0.5, "length": 0.0093, "diameter": 0.0082/' d.json > c.json
+  "$kolsky" run c.json -o c.h5 --quiet >out.txt 2>err.txt
+  grep -q "warning: c.json: the packing starts with [0-9.]* MPa on an end wall, [0-9]* % of the pulse's 20 MPa" err.txt || fail "no warning: $(cat err.txt)"
+  grep -q "DEM packing: initial wall stress" err.txt && fail "--quiet printed the report: $(cat err.txt)"
+  no_temp_files ;;
 *) fail "unknown case" ;;
 esac
 echo "PASS [$case_name]"
