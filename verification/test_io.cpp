@@ -220,7 +220,13 @@ TEST(IoCsv, MissingAndEmptyFilesAreInputErrors) {
     kolsky::io::read_csv(dir.file("missing.csv"));
     FAIL() << "expected InputError";
   } catch (const kolsky::InputError& e) {
-    EXPECT_EQ(e.rule(), "cannot open");
+    EXPECT_EQ(e.rule(), "cannot open: No such file or directory");
+  }
+  try {  // a folder opens as a stream on Linux and reads as empty: say what it is
+    kolsky::io::read_csv(dir.str());
+    FAIL() << "expected InputError";
+  } catch (const kolsky::InputError& e) {
+    EXPECT_EQ(e.rule(), "is a directory, not a CSV file");
   }
   const std::string empty = dir.file("empty.csv");
   write_text(empty, "# only a comment\n\n");

@@ -32,6 +32,8 @@ int cmd_analyze(const std::vector<std::string>& args) {
   shpb::FaceWaves waves;
   try {
     waves = shpb::process_gauges(rec, bars.setup, bars.gauge, &report);
+  } catch (const shpb::GaugeRowError& e) {  // the file line, as every other CSV error gives
+    throw InputError(file, "line " + std::to_string(csv.lines.at(e.row)), e.rule);
   } catch (const std::invalid_argument& e) {
     throw InputError(file, "", e.what());
   }

@@ -88,9 +88,11 @@ void check_same_scene(const std::string& checkpoint, const nlohmann::json& saved
                        "restart");
 }
 
-/// Steps per interval of `seconds`, at least 1 (the probe cadence rounds the same way).
-long steps_per(double seconds, double dt) {
-  return std::max(1L, static_cast<long>(std::lround(seconds / dt)));
+/// Steps per interval of `seconds`, at least 1 (the probe cadence rounds the same way), at
+/// most `steps` (an interval beyond the run acts once, and must not overflow a long).
+long steps_per(double seconds, double dt, long steps) {
+  const double n = std::min(std::round(seconds / dt), static_cast<double>(steps));
+  return std::max(1L, static_cast<long>(n));
 }
 
 }  // namespace
@@ -109,6 +111,22 @@ int cmd_run(const std::vector<std::string>& args) {
     throw InputError(file, "loading.kind",
                      "--gauges-csv: strain-rate walls (loading.kind = strain_rate) have no bars, "
                      "hence no gauge record");
+  // Everything that can be checked without the assembly is checked before it is built (a DEM
+  // packing takes minutes): the end time against the wave's arrival, the restart file against
+  // the scene, a checkpoint request against the specimen model.
+  try {
+    shpb::require_reachable_end(sc.spec);
+  } catch (const InputError& e) {
+    throw InputError(file, e.path(), e.rule());
+  }
+  if (o.checkpoint_every > 0 && std::holds_alternative<fe::FeSpecimenParams>(sc.spec.specimen))
+    throw InputError(file, "specimen.model",
+                     "--checkpoint-every: checkpoints are not available for the fe specimen");
+  std::optional<io::Checkpoint> resume;
+  if (!o.restart.empty()) {
+    resume = io::read_checkpoint_hdf5(o.restart);
+    check_same_scene(o.restart, resume->meta.value("scene", nlohmann::json()), sc.resolved);
+  }
   // A DEM specimen is packed (or read from its cache) while the simulation is built: minutes
   // at N = 2, tens of minutes at N = 1. A bar per phase on a terminal.
   std::optional<Progress> packing_bar;
@@ -142,12 +160,7 @@ int cmd_run(const std::vector<std::string>& args) {
 
   // Checkpoint, restart and particle snapshots: hooks of the run loop (shpb::RunControl).
   shpb::RunControl control;
-  std::optional<io::Checkpoint> resume;
-  if (!o.restart.empty()) {
-    resume = io::read_checkpoint_hdf5(o.restart);
-    check_same_scene(o.restart, resume->meta.value("scene", nlohmann::json()), sc.resolved);
-    control.resume = &resume->state;
-  }
+  if (resume) control.resume = &resume->state;
   const std::string ck_file = !o.checkpoint_file.empty() ? o.checkpoint_file
       : (std::filesystem::path(out).parent_path() / std::filesystem::path(out).stem()).string() +
             ".ckpt.h5";
@@ -157,7 +170,7 @@ int cmd_run(const std::vector<std::string>& args) {
     if (!sim->can_checkpoint())
       throw InputError(file, "specimen.model",
                        "--checkpoint-every: checkpoints are not available for the fe specimen");
-    control.checkpoint_every = steps_per(o.checkpoint_every, sim->schedule().dt);
+    control.checkpoint_every = steps_per(o.checkpoint_every, sim->schedule().dt, sim->schedule().n_steps);
     control.checkpoint = [&](const shpb::ShpbState& s) {
       io::write_checkpoint_hdf5(ck_file, {ck_meta, s});
     };
@@ -167,7 +180,7 @@ int cmd_run(const std::vector<std::string>& args) {
   if (sc.spec.output.snapshot_interval > 0) {
     const auto [h5, xmf] = io::snapshot_paths(out);
     snapshots = std::make_unique<io::SnapshotWriter>(h5, xmf);
-    control.snapshot_every = steps_per(sc.spec.output.snapshot_interval, sim->schedule().dt);
+    control.snapshot_every = steps_per(sc.spec.output.snapshot_interval, sim->schedule().dt, sim->schedule().n_steps);
     control.snapshot = [&](long n, double t, const dem::Particles& p) { snapshots->add(n, t, p); };
     // Breaking grains: the grain-size curve (grains + fines) at the same times, one CSV table.
     curves.header = {"time_s", "diameter_m", "percent_passing"};

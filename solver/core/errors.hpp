@@ -24,7 +24,24 @@ class InputError : public std::runtime_error {
   static std::string format(const std::string& f, const std::string& p, const std::string& r) {
     std::string s = f.empty() ? std::string("input") : f;
     if (!p.empty()) s += ": " + p;
-    return s + ": " + r;
+    return printable(s + ": " + r);
+  }
+  /// Control characters (a NUL or a line break in a JSON key, a file name) as \u00XX: what()
+  /// is one line, printed with %s, which would stop at a NUL or split at a line break.
+  static std::string printable(const std::string& s) {
+    static const char* hex = "0123456789abcdef";
+    std::string out;
+    for (const char c : s) {
+      const auto u = static_cast<unsigned char>(c);
+      if (u >= 0x20 && u != 0x7f) {
+        out += c;
+        continue;
+      }
+      out += "\\u00";
+      out += hex[u >> 4];
+      out += hex[u & 15];
+    }
+    return out;
   }
   std::string file_, path_, rule_;
 };

@@ -206,6 +206,7 @@ PackingResult generate_packing(const PackingParams& in) {
   const double volume = psd::cylinder_volume(in.diameter, L);
   const std::vector<double> d = psd::sample_diameters(in.curve, volume * (1 - in.porosity),
                                                       in.seed);
+  check(!d.empty(), "diameter", "the cylinder's solid volume holds no grain of the curve");  // d.front()
   check(2 * d.front() < std::min(in.diameter, L), "curve",
         "largest grain does not fit twice across the cylinder");
 
@@ -241,9 +242,13 @@ PackingResult generate_packing(const PackingParams& in) {
         target.push_back(d[s] / 2);
         placed = true;
       }
+      // The scene has no initial_solid_fraction (dem_keys.cpp names this after the grains).
       check(placed, "initial_solid_fraction",
-            "random sequential addition found no place for grain " + std::to_string(s) +
-                " after " + std::to_string(in.max_rsa_attempts) + " tries; lower it");
+            "random sequential addition found no place for grain " + std::to_string(s + 1) +
+                " of " + std::to_string(d.size()) + " (" + std::to_string(d[s]) +
+                " m) after " + std::to_string(in.max_rsa_attempts) +
+                " tries: the grains are too coarse for the cylinder; smaller grains, a larger "
+                "specimen or another seed");
     }
   }
   // Spatial order for memory locality; the target radii follow the permutation.

@@ -5,7 +5,10 @@
 #include "core/atomic_file.hpp"
 #include "core/errors.hpp"
 
+#include <cerrno>
 #include <charconv>
+#include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <set>
 #include <sstream>
@@ -46,6 +49,10 @@ bool parse_number(const std::string& cell, double& out) {
 
 std::string line_ref(size_t line_no) { return "line " + std::to_string(line_no); }
 
+const char* const kDecimalCommaHint =
+    ": fields are separated by commas or blanks and the decimal point is '.' (a decimal-comma "
+    "or ';'-separated export? convert it)";
+
 }  // namespace
 
 size_t CsvTable::rows() const { return columns.empty() ? 0 : columns.front().size(); }
@@ -60,8 +67,10 @@ const std::vector<double>& CsvTable::column(const std::string& name) const {
 }
 
 CsvTable read_csv(const std::string& path) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec)) throw InputError(path, "", "is a directory, not a CSV file");
   std::ifstream in(path);
-  if (!in) throw InputError(path, "", "cannot open");
+  if (!in) throw InputError(path, "", std::string("cannot open: ") + std::strerror(errno));
   CsvTable t;
   bool first_row = true;
   size_t line_no = 0;
@@ -80,6 +89,15 @@ CsvTable read_csv(const std::string& path) {
       first_row = false;
       t.columns.resize(cells.size());
       if (first_bad != cells.size()) {  // any non-numeric cell: this row names the columns
+        // A header names columns; one with numbers among its names, or a ';', is almost
+        // always a decimal-comma export ("0,5;1,2" splits into '0', '5;1', '2'), which would
+        // otherwise be reported as a duplicate or a mismatched column.
+        bool numeric_name = first_bad > 0;  // the cells before first_bad are numbers
+        for (size_t i = first_bad + 1; i < cells.size() && !numeric_name; ++i)
+          numeric_name = parse_number(cells[i], values[i]);
+        if (numeric_name || content.find(';') != std::string::npos)
+          throw InputError(path, line_ref(line_no),
+                           "'" + content + "' mixes numbers and text" + kDecimalCommaHint);
         std::set<std::string> seen;
         for (size_t i = 0; i < cells.size(); ++i) {
           if (cells[i].empty())
@@ -100,7 +118,8 @@ CsvTable read_csv(const std::string& path) {
       const std::string col = t.header.empty() ? "column " + std::to_string(first_bad + 1)
                                                : "column '" + t.header[first_bad] + "'";
       throw InputError(path, line_ref(line_no),
-                       col + ": '" + cells[first_bad] + "' is not a number");
+                       col + ": '" + cells[first_bad] + "' is not a number" +
+                           (content.find(';') != std::string::npos ? kDecimalCommaHint : ""));
     }
     for (size_t i = 0; i < values.size(); ++i) t.columns[i].push_back(values[i]);
     t.lines.push_back(line_no);

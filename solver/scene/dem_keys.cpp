@@ -91,6 +91,7 @@ std::vector<dem::InputName> dem_input_names(const dem::ContactLawParams& law) {
       {"dem.packing", "specimen.packing"},
       {"dem.packing.curve", "specimen.upscale"},  // the upscaled curve's largest grain
       {"dem.packing.porosity", "specimen.porosity"},
+      {"dem.packing.initial_solid_fraction", "specimen.upscale"},  // RSA found no room: coarse grains
       {"dem.packing.diameter", "specimen.diameter"},
       {"dem.packing.length", "specimen.length"},
       {"dem.packing.initial_stress", "specimen.initial_stress"},

@@ -1,9 +1,13 @@
 #include "scene/json_reader.hpp"
 
 #include <algorithm>
+#include <cerrno>
 #include <climits>
 #include <cmath>
+#include <cstring>
+#include <filesystem>
 #include <fstream>
+#include <functional>
 #include <sstream>
 #include <stdexcept>
 
@@ -76,14 +80,84 @@ TextPosition text_position(std::string_view text, size_t byte) {
   return pos;
 }
 
+namespace {
+
+/// The dotted path of the value being parsed, kept from nlohmann's parser events, so that an
+/// error the parser itself raises (a duplicate key, a number outside the double range) names
+/// the key like every other scene error. Each open object remembers its keys: nlohmann keeps
+/// the last of two equal keys without a word, and a scene that says a thing twice is refused.
+class PathTracker {
+ public:
+  bool operator()(int /*depth*/, json::parse_event_t event, json& parsed) {
+    using E = json::parse_event_t;
+    switch (event) {
+      case E::object_start: stack_.push_back({false, child(), {}, {}, 0}); break;
+      case E::array_start: stack_.push_back({true, child(), {}, {}, 0}); break;
+      case E::key: {
+        Frame& f = stack_.back();
+        f.key = parsed.get<std::string>();
+        if (!f.keys.insert(f.key).second) duplicate_ = child();
+        break;
+      }
+      case E::object_end:
+      case E::array_end:
+        stack_.pop_back();
+        element_done();
+        break;
+      case E::value: element_done(); break;
+    }
+    // Stopping here keeps the path of the duplicate; the caller turns it into the error.
+    if (!duplicate_.empty()) throw DuplicateKey{};
+    return true;
+  }
+  /// Path of the value the parser is at (the last key read, or the next array element).
+  std::string child() const {
+    if (stack_.empty()) return "";
+    const Frame& f = stack_.back();
+    return f.array ? f.path + "[" + std::to_string(f.index) + "]" : join_path(f.path, f.key);
+  }
+  const std::string& duplicate() const { return duplicate_; }
+  struct DuplicateKey {};
+
+ private:
+  struct Frame {
+    bool array;
+    std::string path;
+    std::set<std::string> keys;
+    std::string key;
+    size_t index;
+  };
+  void element_done() {
+    if (!stack_.empty() && stack_.back().array) ++stack_.back().index;
+  }
+  std::vector<Frame> stack_;
+  std::string duplicate_;
+};
+
+}  // namespace
+
 json read_json_file(const std::string& path) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec))
+    throw InputError(path, "", "is a directory, not a JSON file");
   std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path, "", "cannot open the file");
+  if (!in) throw InputError(path, "", std::string("cannot open the file: ") + std::strerror(errno));
   std::ostringstream buf;
   buf << in.rdbuf();
   const std::string text = buf.str();
+  PathTracker tracker;
   try {
-    return json::parse(text);
+    return json::parse(text, std::ref(tracker));
+  } catch (const PathTracker::DuplicateKey&) {
+    const std::string& key = tracker.duplicate();
+    throw InputError(path, key, "duplicate key '" + last_segment(key) +
+                                    "': an object holds each key once; remove one of them");
+  } catch (const json::out_of_range& e) {  // 406: a number beyond the double range (1e400)
+    const std::string what = e.what();
+    const auto quote = what.find('\'');
+    const std::string number = quote == std::string::npos ? "" : " " + what.substr(quote);
+    throw InputError(path, tracker.child(), "the number" + number +
+                         " is outside the range of a double (magnitude up to 1.8e308)");
   } catch (const json::parse_error& e) {
     // nlohmann's message is "[json.exception...] parse error at line L, column C: detail";
     // keep the detail and state the position ourselves, computed from the byte offset.

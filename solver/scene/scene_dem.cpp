@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "core/errors.hpp"
+#include "psd/sampling.hpp"
 #include "scene/csv_load.hpp"
 #include "scene/dem_keys.hpp"
 #include "scene/scene_internal.hpp"
@@ -19,6 +20,29 @@ namespace fs = std::filesystem;
 template <class P>
 void read_keys(JsonReader& r, const std::vector<LawKey<P>>& keys, P& p) {
   for (const LawKey<P>& k : keys) p.*k.field = r.number("specimen." + k.key);
+}
+
+// The grains the packing will draw (psd::sample_diameters with its volume and seed: the same
+// sample, in milliseconds), drawn here so that a specimen too small to hold a grain, or one
+// needing more grains than the sampler allows, is refused while the scene is read, under the
+// scene's key, before any packing work; the packing's own rules (the largest grain fits
+// twice across, RSA finds room) follow in dem/packing.cpp.
+void check_packable(JsonReader& r, const dem::PackingParams& p) {
+  const double solid = psd::cylinder_volume(p.diameter, p.length) * (1 - p.porosity);
+  std::vector<double> grains;
+  try {
+    grains = psd::sample_diameters(p.curve, solid, p.seed);
+  } catch (const std::invalid_argument& e) {  // the expected count beyond kMaxSampleGrains
+    r.fail("specimen.upscale", std::string(e.what()) + "; a larger specimen.upscale or a "
+                               "smaller specimen");
+  }
+  if (!grains.empty()) return;
+  const bool thin = p.diameter <= p.length;
+  r.fail(thin ? "specimen.diameter" : "specimen.length",
+         "the specimen holds no grain: its solid volume, (1 - porosity) x the cylinder, is " +
+             format_number(solid) + " m^3, too small for one grain of the curve (" +
+             format_number(p.curve.d_min()) + " to " + format_number(p.curve.d_max()) +
+             " m after upscaling); a larger specimen or a smaller specimen.upscale");
 }
 
 }  // namespace
@@ -38,6 +62,7 @@ dem::DemSpecimenParams read_dem_specimen(JsonReader& r, const std::string& base_
   d.packing.diameter = r.number("specimen.diameter");
   d.packing.length = r.number("specimen.length");
   d.packing.seed = static_cast<std::uint64_t>(r.integer("specimen.seed"));
+  check_packable(r, d.packing);
   d.packing.jam = r.text("specimen.packing") == "jammed";
   if (std::string cache = r.text("specimen.packing_cache"); !cache.empty()) {
     fs::path cp(cache);  // relative to the scene file's folder, like the CSV paths

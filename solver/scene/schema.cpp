@@ -161,7 +161,9 @@ std::vector<ParamSpec> build_table() {
   add_dem_rows(s);
 
   const shpb::TimeSpec time;
-  s.add(VT::number, "time.end", kRequired, "s", kPositive, "Simulated time");
+  s.add(VT::number, "time.end", kRequired, "s", kPositive,
+        "Simulated time; at most 1e10 steps (time.end / dt, time_loop::kMaxSteps), and long "
+        "enough for two probe samples after the incident wave reaches the specimen");
   s.add(VT::number, "time.dt", time.dt, "s", kNonNegative,
         "Time step; 0 = safety_factor x stable time step");
   s.add_derived(VT::number, "time.safety_factor", "0.5; 0.15 for specimen.model = dem", "-",

@@ -30,8 +30,14 @@ void add_dem_rows(TableBuilder& s) {
         "CSV table diameter_m,percent_passing (by mass), before upscaling", dem);
   s.add(VT::number, "specimen.upscale", 1.0, "-", kPositive,
         "Upscaling factor N: every grain size times N (Sec. 4.3, Ch. 5)", dem);
-  s.add(VT::number, "specimen.porosity", pack.porosity, "-", kOpenUnit,
-        "Target porosity of the packing (Sec. 4.3: 0.44)", dem);
+  // The packing places the grains shrunk to a solid fraction (initial_solid_fraction, 0.25)
+  // and grows them to size, so 1 - porosity must exceed that fraction (dem/packing.cpp).
+  const Range packable{0.0, 1.0 - pack.initial_solid_fraction, true, true};
+  s.add(VT::number, "specimen.porosity", pack.porosity, "-", packable,
+        "Target porosity of the packing (Sec. 4.3: 0.44); the packing places the grains shrunk "
+        "to a solid fraction of " + format_number(pack.initial_solid_fraction) +
+            " before growing them to size, hence the upper bound (docs/dem.md, Packing)",
+        dem);
   s.add(VT::integer, "specimen.seed", static_cast<int>(pack.seed), "-", kNonNegative,
         "Seed of the grain sampling and placement", dem);
   s.add(VT::choice, "specimen.packing", pack.jam ? "jammed" : "loose", "-", kNoRange,

@@ -37,7 +37,7 @@ double validated_dt(const GaugeRecord& rec) {
   for (std::size_t i = 0; i < n; ++i)
     if (!std::isfinite(rec.t[i]) || !std::isfinite(rec.incident[i]) ||
         !std::isfinite(rec.transmitted[i]))
-      throw std::invalid_argument("process_gauges: non-finite value in row " + std::to_string(i));
+      throw GaugeRowError(i, "non-finite value (time, incident or transmitted strain)");
   const double dt = (rec.t.back() - rec.t.front()) / static_cast<double>(n - 1);
   if (!(dt > 0)) throw std::invalid_argument("process_gauges: time must increase");
   for (std::size_t i = 1; i < n; ++i) {
@@ -46,9 +46,8 @@ double validated_dt(const GaugeRecord& rec) {
     // significant digits jitters by ~1e-6 of a step late in the record, so allow 1e-4 of a step
     // (100x that rounding, and far below anything that would move a sample).
     if (std::abs(step - dt) > 1e-4 * dt)
-      throw std::invalid_argument("process_gauges: non-uniform time step at row " +
-                                  std::to_string(i) + " (t = " + num(rec.t[i]) + " s, step " +
-                                  num(step) + " s, mean step " + num(dt) + " s)");
+      throw GaugeRowError(i, "non-uniform time step (t = " + num(rec.t[i]) + " s, step " +
+                                 num(step) + " s, mean step " + num(dt) + " s)");
   }
   return dt;
 }

@@ -13,6 +13,8 @@
 // Input strains are as measured: compression negative. Output FaceWaves are compression
 // positive (analysis.hpp).
 #pragma once
+#include <cstddef>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -43,7 +45,18 @@ struct GaugeReport {
   std::vector<std::string> warnings;
 };
 
-/// Throws std::invalid_argument on unusable input (non-uniform time, no pulse found, ...).
+/// A rule broken at one sample of the record: what() names the 0-based row; a reader that
+/// knows where the row came from (kolsky analyze: the CSV's file line) reports that instead.
+struct GaugeRowError : std::invalid_argument {
+  GaugeRowError(std::size_t row, const std::string& rule)
+      : std::invalid_argument("process_gauges: row " + std::to_string(row) + ": " + rule),
+        row(row), rule(rule) {}
+  std::size_t row;
+  std::string rule;
+};
+
+/// Throws std::invalid_argument on unusable input (no pulse found, ...), GaugeRowError for a
+/// non-finite value or a non-uniform time step at one row.
 FaceWaves process_gauges(const GaugeRecord& rec, const AnalysisSetup& setup,
                          const GaugeOptions& opt, GaugeReport* report = nullptr);
 

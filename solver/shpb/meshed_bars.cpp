@@ -6,6 +6,7 @@
 
 #include "core/errors.hpp"
 #include "shpb/gauge_waves.hpp"
+#include "shpb/simulation.hpp"
 #include "shpb/specimen_models.hpp"
 
 namespace kolsky::shpb {
@@ -41,7 +42,7 @@ MeshedBarsAssembly::MeshedBarsAssembly(const ExperimentSpec& spec)
       meshed_(meshed_params(spec)) {}
 
 double MeshedBarsAssembly::arrival_time() const {
-  return incident_spec_.geometry.length / incident_spec_.material.wave_speed();
+  return incident_arrival_time(BarKind::meshed, incident_spec_);
 }
 
 void MeshedBarsAssembly::step(long, double t, double dt, const RunControl&) { meshed_.step(t, dt); }

@@ -77,15 +77,7 @@ double OneDimBarsAssembly::stable_dt() const {
   return std::min({stable_dt_of(specimen_), stable_dt_of(incident_), stable_dt_of(transmission_)});
 }
 
-double OneDimBarsAssembly::arrival_time() const {
-  const auto& g = incident_spec_.geometry;
-  if (kind_ == BarKind::sphere_chain) {
-    // Ball 0 is loaded; the wave crosses N-1 contacts spaced 2R at the chain's long-wave speed.
-    const auto& chain = std::get<bar::SphereChainBar>(incident_);
-    return (chain.size() - 1) * g.diameter / chain.properties().long_wave_speed();
-  }
-  return g.length / incident_spec_.material.wave_speed();
-}
+double OneDimBarsAssembly::arrival_time() const { return incident_arrival_time(kind_, incident_spec_); }
 
 void OneDimBarsAssembly::step(long n, double t, double dt, const RunControl& control) {
   FaceState faces{intrusion(incident_), intrusion(transmission_), rate(incident_), rate(transmission_)};

@@ -49,6 +49,33 @@ double specimen_diameter(const SpecimenSpec& s) {
   return std::visit(v, s);
 }
 
+double incident_arrival_time(BarKind kind, const BarSpec& b) {
+  const auto& g = b.geometry;
+  if (kind == BarKind::sphere_chain) {
+    // Ball 0 is loaded; the wave crosses N-1 contacts spaced 2R at the chain's long-wave speed.
+    const int n = b.n_spheres > 0 ? b.n_spheres : bar::sphere_count(g.length, g.diameter);
+    return (n - 1) * g.diameter / bar::sphere_chain_properties(b.material, g.diameter).long_wave_speed();
+  }
+  return g.length / b.material.wave_speed();
+}
+
+void require_reachable_end(const ExperimentSpec& spec) {
+  const double arrival = spec.strain_rate ? 0.0 : incident_arrival_time(spec.bar_kind, spec.incident);
+  const double interval = spec.output.interval > 0.0 ? spec.output.interval : 1e-6;
+  // The exact rule needs arrival + 2 dt k, k = max(1, round(interval / dt)) steps per sample;
+  // dt k >= interval / 2 for every dt, so arrival + interval is a bound it never undercuts.
+  if (spec.time.end_time > arrival + interval) return;
+  std::ostringstream msg;
+  msg << std::setprecision(4) << "must be more than " << arrival + interval << " s: ";
+  if (spec.strain_rate)
+    msg << "the analysis needs two probe samples (output.interval = " << interval << " s apart)";
+  else
+    msg << "the incident wave reaches the specimen at L_I / c_I = " << arrival
+        << " s, and the analysis needs two probe samples (output.interval = " << interval
+        << " s apart) after that";
+  throw InputError("", "time.end", msg.str());
+}
+
 bool RunResult::has_probe(const std::string& name) const {
   for (const auto& p : probes)
     if (p.name == name) return true;

@@ -50,6 +50,16 @@ struct RunAnalysis {
   SpecimenHistory history;
 };
 
+/// Incident-wave arrival at the specimen face from the bar alone, L_I / c_I (sphere chains:
+/// the chain's long-wave speed over its N - 1 contacts), s: what every bar assembly reports.
+double incident_arrival_time(BarKind kind, const BarSpec& incident);
+
+/// The part of SimulatedShpb::require_analysable_end that needs no assembly, for a check before
+/// the expensive build (a DEM packing takes minutes): throws InputError("", "time.end", ...)
+/// unless time.end exceeds the arrival plus one output interval, which the exact rule (two
+/// samples after the arrival, in whole steps) never asks less than.
+void require_reachable_end(const ExperimentSpec& spec);
+
 class SimulatedShpb {
  public:
   /// Throws InputError("", "time.dt", ...) when the requested dt exceeds the stable limit, and

@@ -23,9 +23,23 @@ Schedule plan_steps(const StepPolicy& p, double stable_dt) {
   } else {
     s.dt = p.safety_factor * stable_dt;
   }
-  s.n_steps = static_cast<long>(std::ceil(p.end_time / s.dt - 1e-9)) + 1;
+  // The count as a double first: end / dt can exceed every integer type (time.end = 1e300,
+  // time.dt = 1e-300), and converting such a double to long is undefined behaviour.
+  const double steps = std::ceil(p.end_time / s.dt - 1e-9) + 1;
+  if (!(steps <= kMaxSteps)) {
+    // A fixed dt that the stable step would not need so many steps for is the key at fault.
+    const double at_stable = p.end_time / (p.safety_factor * stable_dt);
+    const bool dt_at_fault = p.dt > 0.0 && at_stable <= kMaxSteps;
+    throw InputError("", dt_at_fault ? "time.dt" : "time.end",
+                     "time.end / dt = " + sci(p.end_time) + " s / " + sci(s.dt) + " s is " +
+                         sci(steps) + " steps, more than the " + sci(kMaxSteps) +
+                         " a run may take");
+  }
+  s.n_steps = static_cast<long>(steps);
   const double interval = p.output_interval > 0.0 ? p.output_interval : 1e-6;
-  s.sample_every = std::max(1L, static_cast<long>(std::lround(interval / s.dt)));
+  // Clamped to the run (sampling only step 0 either way): a huge interval must not overflow.
+  const double every = std::min(std::round(interval / s.dt), static_cast<double>(s.n_steps));
+  s.sample_every = std::max(1L, static_cast<long>(every));
   return s;
 }
 

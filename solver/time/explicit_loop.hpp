@@ -26,7 +26,13 @@ struct Schedule {
   double stable_dt = 0;
 };
 
-/// Throws InputError("", "time.dt", ...) for a dt above the stability limit (when checked).
+/// The most steps a run may plan: far beyond any run that can finish (1e10 steps of the
+/// cheapest assembly, about a microsecond each, take three hours; a DEM step takes
+/// milliseconds), and far below where a step count or t = n dt stops being exact.
+inline constexpr double kMaxSteps = 1e10;
+
+/// Throws InputError("", "time.dt", ...) for a dt above the stability limit (when checked),
+/// and InputError("", "time.end" or "time.dt", ...) for more than kMaxSteps steps.
 Schedule plan_steps(const StepPolicy& p, double stable_dt);
 
 /// Runs the steps n = first .. n_steps - 1 at t^n = n dt; samples after the steps n = 0, k,

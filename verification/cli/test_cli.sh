@@ -59,9 +59,30 @@ bad_input)
   expect_exit 2 "$kolsky" run missing.json
   scene s3.json ""; sed -i 's/"end": 0.6e-3/"end": 0.2e-3/' s3.json  # the wave arrives at 0.4 ms
   expect_exit 2 "$kolsky" run s3.json -o o.h5
-  grep -q "s3.json: time.end: must be at least .* reaches the specimen" err.txt || fail "end message: $(cat err.txt)"
+  grep -q "s3.json: time.end: must be more than .* reaches the specimen" err.txt || fail "end message: $(cat err.txt)"
   [ ! -e o.h5 ] || fail "output written for a run ending before the wave arrives"
-  expect_exit 1 "$kolsky" run s.json --threads zero ;;
+  expect_exit 1 "$kolsky" run s.json --threads zero
+  # Bad input the parser or the planner meets, named by file and key (issue 17).
+  scene big.json ', "dt": 1e400'
+  expect_exit 2 "$kolsky" run big.json; grep -q "big.json: time.dt: the number '1e400' is outside the range of a double" err.txt || fail "1e400 message: $(cat err.txt)"
+  scene dup.json ', "end": 1e-3'
+  expect_exit 2 "$kolsky" run dup.json; grep -q "dup.json: time.end: duplicate key 'end'" err.txt || fail "duplicate message: $(cat err.txt)"
+  scene tiny.json ', "dt": 1e-300'
+  expect_exit 2 "$kolsky" run tiny.json; grep -q "tiny.json: time.dt: .* steps, more than the 1e+10" err.txt || fail "step-count message: $(cat err.txt)"
+  scene long.json ""; sed -i 's/"end": 0.6e-3/"end": 1e300/' long.json
+  expect_exit 2 "$kolsky" run long.json; grep -q "long.json: time.end: .* steps, more than the 1e+10" err.txt || fail "step-count message: $(cat err.txt)"
+  scene nul.json ', "e\u0000nd": 1'
+  expect_exit 2 "$kolsky" run nul.json; grep -q "nul.json: time.e.u0000nd: unknown key .*did you mean 'end'" err.txt || fail "NUL key message: $(cat err.txt)"
+  mkdir folder.json; expect_exit 2 "$kolsky" run folder.json; grep -q "folder.json: is a directory" err.txt || fail "folder message: $(cat err.txt)"
+  # A DEM specimen too small for a grain, or too porous to pack: exit 2 before any packing.
+  dem_scene d.json ""; sed -i 's/"diameter": 0.008/"diameter": 0.0005/' d.json
+  expect_exit 2 "$kolsky" run d.json; grep -q "d.json: specimen.diameter: the specimen holds no grain" err.txt || fail "tiny tube message: $(cat err.txt)"
+  dem_scene p.json ""; sed -i 's/"seed": 7/"seed": 7, "porosity": 0.8/' p.json
+  expect_exit 2 "$kolsky" run p.json; grep -q "p.json: specimen.porosity: must be in (0, 0.75), got 0.8" err.txt || fail "porosity message: $(cat err.txt)"
+  dem_scene e.json ""; sed -i 's/"end": 200e-6/"end": 100e-6/' e.json
+  expect_exit 2 "$kolsky" run e.json; grep -q "e.json: time.end: must be more than" err.txt || fail "DEM end message: $(cat err.txt)"
+  grep -q "packing" err.txt && fail "packed before the end time was checked: $(cat err.txt)"
+  no_temp_files ;;
 blow_up)
   # 1.05 x the column's Courant limit with the checks off (time.check_stability = false lifts
   # the dt limit and the energy check): the explicit scheme must blow up, overflow, be caught
@@ -100,7 +121,14 @@ analyze)
   expect_exit 1 "$kolsky" analyze "$ex/gauges_song2009_example.csv"
   printf 't,a,b\n0,1,2\n1,2\n' > ragged.csv
   expect_exit 2 "$kolsky" analyze ragged.csv --bars "$ex/bars_song2009.json"
-  grep -q "ragged.csv: line 3" err.txt || fail "ragged CSV message: $(cat err.txt)" ;;
+  grep -q "ragged.csv: line 3" err.txt || fail "ragged CSV message: $(cat err.txt)"
+  # Every CSV error gives the file line: a NaN sample (line 31 of the record), a decimal comma.
+  awk 'NR == 31 { sub(/,[^,]*$/, ",nan") } { print }' "$ex/gauges_song2009_example.csv" > nan.csv
+  expect_exit 2 "$kolsky" analyze nan.csv --bars "$ex/bars_song2009.json" -o n.csv
+  grep -q "nan.csv: line 31: non-finite value" err.txt || fail "NaN row message: $(cat err.txt)"
+  printf '0,0;0,0\n0,5;1,2\n' > comma.csv
+  expect_exit 2 "$kolsky" analyze comma.csv --bars "$ex/bars_song2009.json"
+  grep -q "comma.csv: line 1: .*decimal-comma" err.txt || fail "decimal-comma message: $(cat err.txt)" ;;
 eos)
   expect_exit 0 "$kolsky" eos --water 3 -o e.csv
   grep -q "^eps_v,p_pa,p_bc_pa,p_d_pa,p_e_pa" e.csv || fail "eos CSV header"
