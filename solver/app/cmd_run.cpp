@@ -15,6 +15,7 @@
 #include <string>
 
 #include "app/commands.hpp"
+#include "app/interrupt.hpp"
 #include "app/plot_output.hpp"
 #include "app/run_checks.hpp"
 #include "app/summary.hpp"
@@ -88,6 +89,19 @@ void check_same_scene(const std::string& checkpoint, const nlohmann::json& saved
                        "restart");
 }
 
+/// The simulated gauge record (first gauge of each bar) in the input format of `kolsky analyze`.
+void write_gauges_csv(const std::string& path, const scene::Scene& sc, const shpb::RunResult& r) {
+  io::CsvTable g;
+  g.header = {"time_s", "incident_strain", "transmitted_strain"};
+  g.columns = {r.t, r.probe(shpb::gauge_probe_name("incident", 0)).value,
+               r.probe(shpb::gauge_probe_name("transmission", 0)).value};
+  io::write_csv(path, g,
+                "simulated gauge record of " + sc.file + " (strain as measured: compression "
+                "negative); gauges at " + std::to_string(sc.spec.incident.gauges.front()) +
+                " m (incident) and " + std::to_string(sc.spec.transmission.gauges.front()) +
+                " m (transmission) from the specimen faces");
+}
+
 /// Steps per interval of `seconds`, at least 1 (the probe cadence rounds the same way), at
 /// most `steps` (an interval beyond the run acts once, and must not overflow a long).
 long steps_per(double seconds, double dt, long steps) {
@@ -103,6 +117,7 @@ int cmd_run(const std::vector<std::string>& args) {
   if (!o.checkpoint_file.empty() && o.checkpoint_every <= 0)
     throw UsageError("--checkpoint-file needs --checkpoint-every");
   if (o.positional.size() != 1) throw UsageError("needs exactly one SCENE.json");
+  const InterruptGuard interrupts;  // SIGINT/SIGTERM: stop at the next step, keep the output
   const std::string gnuplot = o.plot_dir.empty() ? "" : prepare_plots(o.plot_dir);
   const std::string& file = o.positional[0];
   if (o.threads > 0) omp_set_num_threads(o.threads);
@@ -111,9 +126,30 @@ int cmd_run(const std::vector<std::string>& args) {
     throw InputError(file, "loading.kind",
                      "--gauges-csv: strain-rate walls (loading.kind = strain_rate) have no bars, "
                      "hence no gauge record");
+  const std::string out = o.output.empty()
+      ? std::filesystem::path(file).stem().string() + ".h5" : o.output;
+  const std::string ck_file = !o.checkpoint_file.empty() ? o.checkpoint_file
+      : (std::filesystem::path(out).parent_path() / std::filesystem::path(out).stem()).string() +
+            ".ckpt.h5";
   // Everything that can be checked without the assembly is checked before it is built (a DEM
-  // packing takes minutes): the end time against the wave's arrival, the restart file against
-  // the scene, a checkpoint request against the specimen model.
+  // packing takes minutes): every output path, the end time against the wave's arrival, the
+  // restart file against the scene, a checkpoint request against the specimen model.
+  {
+    std::vector<OutputPath> outputs = {{"-o", out}};
+    if (!o.gauges_csv.empty()) outputs.push_back({"--gauges-csv", o.gauges_csv});
+    if (o.checkpoint_every > 0)
+      outputs.push_back({o.checkpoint_file.empty() ? "--checkpoint-every" : "--checkpoint-file", ck_file});
+    if (sc.spec.output.snapshot_interval > 0) {  // beside OUT, named after it
+      const auto [h5, xmf] = io::snapshot_paths(out);
+      outputs.push_back({"-o (particle snapshots)", h5});
+      outputs.push_back({"-o (particle snapshots)", xmf});
+    }
+    std::vector<std::string> inputs = scene_inputs(sc);
+    if (!o.restart.empty()) inputs.push_back(o.restart);
+    // A checkpoint may replace the one the run restarts from: it has been read by then.
+    if (o.checkpoint_every > 0 && !o.restart.empty()) inputs.pop_back();
+    check_outputs(outputs, inputs);
+  }
   try {
     shpb::require_reachable_end(sc.spec);
   } catch (const InputError& e) {
@@ -128,12 +164,15 @@ int cmd_run(const std::vector<std::string>& args) {
     check_same_scene(o.restart, resume->meta.value("scene", nlohmann::json()), sc.resolved);
   }
   // A DEM specimen is packed (or read from its cache) while the simulation is built: minutes
-  // at N = 2, tens of minutes at N = 1. A bar per phase on a terminal.
+  // at N = 2, tens of minutes at N = 1. A bar per phase on a terminal; a signal stops it after
+  // the stage in progress (nothing is written then: there is no run yet).
   std::optional<Progress> packing_bar;
   std::string packing_phase;
-  auto* dem_params = std::get_if<dem::DemSpecimenParams>(&sc.spec.specimen);
-  if (dem_params && !o.quiet && stderr_is_terminal())
+  const bool packing_bars = !o.quiet && stderr_is_terminal();
+  if (auto* dem_params = std::get_if<dem::DemSpecimenParams>(&sc.spec.specimen))
     dem_params->packing.on_progress = [&](const dem::PackingProgress& p) {
+      if (interrupt_signal()) throw StopRequested("stopped on request while packing; nothing written");
+      if (!packing_bars) return;
       if (packing_phase != p.phase) {
         if (packing_bar) packing_bar->finish();
         packing_phase = p.phase;
@@ -141,8 +180,6 @@ int cmd_run(const std::vector<std::string>& args) {
       }
       packing_bar->update(p.done);
     };
-  const std::string out = o.output.empty()
-      ? std::filesystem::path(file).stem().string() + ".h5" : o.output;
 
   std::unique_ptr<shpb::SimulatedShpb> sim;
   try {
@@ -157,13 +194,12 @@ int cmd_run(const std::vector<std::string>& args) {
                  file.c_str(), sim->schedule().n_steps, sim->schedule().dt,
                  sim->schedule().stable_dt);
   const nlohmann::json initial_wall_stress = report_initial_wall_stress(*sim, sc, o.quiet);
+  warn_probe_size(*sim, out);
 
   // Checkpoint, restart and particle snapshots: hooks of the run loop (shpb::RunControl).
   shpb::RunControl control;
+  control.stop = interrupt_flag();
   if (resume) control.resume = &resume->state;
-  const std::string ck_file = !o.checkpoint_file.empty() ? o.checkpoint_file
-      : (std::filesystem::path(out).parent_path() / std::filesystem::path(out).stem()).string() +
-            ".ckpt.h5";
   nlohmann::json ck_meta = {{"scene", sc.resolved}, {"scene_file", sc.file},
                             {"git_commit", build_info::git_commit()}, {"kolsky_version", build_info::version()}};
   if (o.checkpoint_every > 0) {
@@ -204,6 +240,7 @@ int cmd_run(const std::vector<std::string>& args) {
     throw InputError(from_checkpoint ? o.restart : file, e.path(), e.rule());
   }
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const int stop_signal = interrupt_signal();
 
   // Bars: the wave analysis of the face waves; strain-rate walls: the direct one (no waves).
   // A run stopped by a numerical failure before the analysis has its two samples (the
@@ -216,29 +253,41 @@ int cmd_run(const std::vector<std::string>& args) {
   if (resume) rec.meta["restarted_from"] = o.restart;
   if (!initial_wall_stress.is_null()) rec.meta["initial_wall_stress_pa"] = initial_wall_stress;
   if (snapshots) rec.meta["snapshots"] = io::snapshot_paths(out).first;
-  io::write_run_hdf5(out, rec);
-  if (snapshots) snapshots->finish(r.complete);  // kept, marked complete = 0, after a blow-up
-  if (!curves.columns.empty() && !curves.columns[0].empty()) {
-    const std::string stem = out.substr(0, out.size() - (out.size() > 3 && out.ends_with(".h5") ? 3 : 0));
-    io::write_csv(stem + ".grain_size_curves.csv", curves,
-                  "grain-size curves of " + file + " (grains + Eq. 5.16 fines, docs/breakage.md) at the snapshot "
-                  "times" + std::string(r.complete ? "" : "; INCOMPLETE run"));
-  }
+
+  // The outputs, siblings first and the run file last: a file says complete = 1 only when the
+  // run completed and every output before it was written; a failed one is named in the run
+  // file's /meta (output_failure), the rest is kept, and the command exits 1.
+  std::string output_failure;
   if (!o.gauges_csv.empty()) {
-    // The first gauge of each bar, in the input format of `kolsky analyze`.
-    io::CsvTable g;
-    g.header = {"time_s", "incident_strain", "transmitted_strain"};
-    g.columns = {r.t, r.probe(shpb::gauge_probe_name("incident", 0)).value,
-                 r.probe(shpb::gauge_probe_name("transmission", 0)).value};
-    io::write_csv(o.gauges_csv, g,
-                  "simulated gauge record of " + file + " (strain as measured: compression "
-                  "negative); gauges at " + std::to_string(sc.spec.incident.gauges.front()) +
-                  " m (incident) and " + std::to_string(sc.spec.transmission.gauges.front()) +
-                  " m (transmission) from the specimen faces");
+    try {
+      write_gauges_csv(o.gauges_csv, sc, r);
+    } catch (const std::exception& e) {
+      output_failure = std::string("--gauges-csv: ") + e.what();
+    }
   }
+  if (!curves.columns.empty() && !curves.columns[0].empty()) {
+    try {  // breaking grains: the grain-size curves at the snapshot times (docs/breakage.md)
+      const std::string stem = out.substr(0, out.size() - (out.size() > 3 && out.ends_with(".h5") ? 3 : 0));
+      io::write_csv(stem + ".grain_size_curves.csv", curves,
+                    "grain-size curves of " + file + " (grains + Eq. 5.16 fines, docs/breakage.md) at the "
+                    "snapshot times" + std::string(r.complete ? "" : "; INCOMPLETE run"));
+    } catch (const std::exception& e) {
+      if (output_failure.empty()) output_failure = std::string("grain-size curves: ") + e.what();
+    }
+  }
+  if (snapshots) {
+    try {
+      snapshots->finish(r.complete && output_failure.empty());  // kept, complete = 0, after a blow-up
+    } catch (const std::exception& e) {
+      if (output_failure.empty()) output_failure = std::string("particle snapshots: ") + e.what();
+    }
+  }
+  rec.meta["complete"] = r.complete && output_failure.empty();
+  if (!output_failure.empty()) rec.meta["output_failure"] = output_failure;
+  io::write_run_hdf5(out, rec);
 
   std::printf("kolsky run: %s -> %s (%s)\n", file.c_str(), out.c_str(),
-              r.complete ? "complete" : "INCOMPLETE");
+              rec.meta["complete"].get<bool>() ? "complete" : "INCOMPLETE");
   std::printf("  %-26s %ld\n  %-26s %.6g\n  %-26s %.3g\n", "steps", r.steps, "dt_s", r.dt,
               "wall_time_s", wall);
   std::fputs(format_summary(summary).c_str(), stdout);
@@ -246,6 +295,20 @@ int cmd_run(const std::vector<std::string>& args) {
     write_plots(plot::run_figures(r, analysis.waves, analysis.history, file), o.plot_dir, gnuplot, "run");
   else if (!o.plot_dir.empty())
     std::fprintf(stderr, "kolsky run: no plots: the run stopped before the analysis had two samples\n");
+  if (!output_failure.empty()) {
+    std::fprintf(stderr, "kolsky run: error: %s; %s kept, marked incomplete\n", output_failure.c_str(),
+                 out.c_str());
+    return 1;
+  }
+  if (stop_signal) {  // 130 for SIGINT, 143 for SIGTERM, as a shell reports a killed command
+    if (r.complete)
+      std::fprintf(stderr, "kolsky run: %s after the last step; %s is complete\n", interrupt_name(),
+                   out.c_str());
+    else
+      std::fprintf(stderr, "kolsky run: %s: %s; output kept in %s, marked incomplete\n",
+                   interrupt_name(), r.failure.c_str(), out.c_str());
+    return 128 + stop_signal;
+  }
   if (!r.complete) {
     std::fprintf(stderr, "kolsky: numerical failure: %s; output kept in %s, marked incomplete\n",
                  r.failure.c_str(), out.c_str());

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "app/commands.hpp"
+#include "app/interrupt.hpp"
 #include "core/errors.hpp"
 #include "core/build_info.hpp"
 
@@ -42,8 +43,9 @@ const char* kUsage =
     "      every scene and BARS.json parameter with its default, unit and description\n"
     "  kolsky --help | --version\n"
     "\n"
-    "exit codes: 0 ok, 1 usage error, 2 bad input, 3 numerical failure (output kept, marked\n"
-    "incomplete)\n";
+    "exit codes: 0 ok, 1 usage error (or an output that could not be written), 2 bad input,\n"
+    "3 numerical failure (output kept, marked incomplete), 130/143 stopped by SIGINT/SIGTERM\n"
+    "(run: at the next step, output kept, marked incomplete)\n";
 
 }  // namespace
 
@@ -81,6 +83,9 @@ int main(int argc, char** argv) {
   } catch (const kolsky::InputError& e) {
     std::fprintf(stderr, "kolsky: error: %s\n", e.what());
     return kolsky::kExitInputError;
+  } catch (const kolsky::StopRequested& e) {  // a signal before the run had anything to keep
+    std::fprintf(stderr, "kolsky %s: %s: %s\n", cmd.c_str(), kolsky::app::interrupt_name(), e.what());
+    return 128 + kolsky::app::interrupt_signal();
   } catch (const kolsky::NumericalError& e) {
     std::fprintf(stderr, "kolsky: numerical failure: %s\n", e.what());
     return kolsky::kExitNumericalError;

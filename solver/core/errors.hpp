@@ -46,6 +46,13 @@ class InputError : public std::runtime_error {
   std::string file_, path_, rule_;
 };
 
+/// A run stopped on request (SIGINT, SIGTERM), between two steps: handled like a numerical
+/// failure (what was computed is kept, marked incomplete), with the exit code 128 + signal.
+class StopRequested : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
 /// A run that blew up: NaN/Inf state, or energy growing past its bound. t is the simulated time.
 class NumericalError : public std::runtime_error {
  public:

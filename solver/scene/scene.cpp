@@ -35,6 +35,8 @@ namespace {
 
 std::string show(double v) { return format_number(v); }
 
+constexpr std::size_t kMaxGaugesPerBar = 1000;
+
 void check_gauges(JsonReader& r, const std::string& prefix, const shpb::BarSpec& b,
                   shpb::BarKind kind) {
   const double length = b.geometry.length, d = b.geometry.diameter;
@@ -68,6 +70,13 @@ shpb::BarSpec read_bar(JsonReader& r, const std::string& side, shpb::BarKind kin
   b.material.poisson_ratio = r.number(p + "poisson_ratio");
   if (r.has(p + "gauges")) {
     b.gauges = r.numbers(p + "gauges");
+    // Each gauge is a probe sampled at every output step, in memory and in the run file:
+    // 200,000 gauges wrote 1.7 GB. A bar study needs tens; the limit leaves room for a gauge
+    // every 5 mm along a 5 m bar.
+    if (b.gauges.size() > kMaxGaugesPerBar)
+      r.fail(p + "gauges", "at most " + std::to_string(kMaxGaugesPerBar) +
+                               " gauges per bar (each is a probe of the run file), got " +
+                               std::to_string(b.gauges.size()));
   } else {
     b.gauges = {0.5 * b.geometry.length};  // the table documents this as [length/2]
     r.resolve(p + "gauges", b.gauges);

@@ -37,7 +37,8 @@ void add_scene_bar(TableBuilder& t, const std::string& side) {
   t.add(VT::number, p + "poisson_ratio", m.poisson_ratio, "-", kPoisson,
         "Poisson ratio (dispersion correction only)");
   t.add_derived(VT::number_list, p + "gauges", "[length/2]", "m", kPositive,
-                "Gauge distances from the specimen face, each strictly inside (0, length)");
+                "Gauge distances from the specimen face, each strictly inside (0, length); at most "
+                "1000 per bar (each is a probe of the run file)");
   t.add(VT::integer, p + "n_spheres", shpb::BarSpec{}.n_spheres, "-", kSphereCount,
         "Ball count; 0 = round(length/diameter), Eq. 4.3", "bars.kind=sphere_chain");
 }

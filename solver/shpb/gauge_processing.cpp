@@ -10,6 +10,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "core/errors.hpp"
 #include "shpb/dispersion.hpp"
 
 namespace kolsky::shpb {
@@ -92,6 +93,11 @@ struct Detection {
 Detection detect_start(const std::vector<double>& s, Stats base, const GaugeOptions& opt) {
   double peak = 0;
   for (double v : s) peak = std::max(peak, std::abs(v - base.mean));
+  // Finite strains whose squares overflow (1e160) leave an infinite noise sigma: the record is
+  // beyond what double arithmetic can process, a numerical failure of the processing.
+  if (!std::isfinite(base.sigma) || !std::isfinite(base.mean))
+    throw NumericalError("process_gauges: the incident gauge's pre-trigger noise sigma is not "
+                         "finite (" + num(base.sigma) + "): the strains are too large to process", 0.0);
   Detection d;
   d.level = std::max(opt.threshold_fraction * peak, opt.noise_sigmas * base.sigma);
   long crossing = -1;

@@ -2,6 +2,7 @@
 // snapshots. Kept apart from simulation.hpp so that the assemblies (which call the snapshot
 // hook from their step) can include it without including the simulation that owns them.
 #pragma once
+#include <csignal>
 #include <functional>
 
 #include "dem/particles.hpp"
@@ -26,6 +27,9 @@ struct RunControl {
   std::function<void(long step, double t, const psd::GrainSizeCurve&)> grain_size_curve;
   /// Continue from this state (a checkpoint of a simulation built from the same spec).
   const ShpbState* resume = nullptr;
+  /// Polled before every step: once non-zero (a signal handler's flag), the run stops there
+  /// and returns what it computed, incomplete, its failure saying so (StopRequested).
+  const volatile std::sig_atomic_t* stop = nullptr;
 };
 
 }  // namespace kolsky::shpb

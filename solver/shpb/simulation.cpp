@@ -223,6 +223,11 @@ RunResult SimulatedShpb::run_on(A& assembly, Progress* progress, const RunContro
     first = control.resume->next_step;
   }
   auto step = [&](double t, double dt) {
+    if (control.stop && *control.stop) {
+      std::ostringstream msg;
+      msg << std::setprecision(6) << "stopped on request (signal) before the step at t = " << t << " s";
+      throw StopRequested(msg.str());
+    }
     const long n = r.steps;  // one step per call since step 0
     if (checkpointing && n > first && n % control.checkpoint_every == 0)
       control.checkpoint(save_state(r, n));
@@ -246,6 +251,10 @@ RunResult SimulatedShpb::run_on(A& assembly, Progress* progress, const RunContro
   try {
     time_loop::run_loop_from(schedule_, first, step, sample, progress);
   } catch (const NumericalError& e) {
+    if (progress) progress->finish();
+    r.complete = false;
+    r.failure = e.what();
+  } catch (const StopRequested& e) {  // what was computed is kept, as after a blow-up
     if (progress) progress->finish();
     r.complete = false;
     r.failure = e.what();

@@ -225,6 +225,61 @@ dem_checks)
   grep -q "warning: c.json: the packing starts with [0-9.]* MPa on an end wall, [0-9]* % of the pulse's 20 MPa" err.txt || fail "no warning: $(cat err.txt)"
   grep -q "DEM packing: initial wall stress" err.txt && fail "--quiet printed the report: $(cat err.txt)"
   no_temp_files ;;
+outputs)
+  # Every output path is checked before any work (exit 2 naming the option), no output may be
+  # an input or another output, and analyze refuses non-finite results (exit 3).
+  scene s.json ""
+  for args in "-o nodir/o.h5" "-o ." "-o o.h5 --gauges-csv nodir/g.csv" "-o s.json" "-o o.h5 --gauges-csv o.h5"; do
+    expect_exit 2 "$kolsky" run s.json $args --quiet
+    [ "$(wc -l < err.txt)" -eq 1 ] || fail "error is not one line: $(cat err.txt)"
+  done
+  grep -q "gauges-csv: 'o.h5' is also the output of -o" err.txt || fail "same-output message: $(cat err.txt)"
+  expect_exit 2 "$kolsky" run s.json -o s.json; grep -q "^kolsky: error: -o: 's.json' is an input" err.txt || fail "input message: $(cat err.txt)"
+  grep -q '"bars"' s.json || fail "the scene was overwritten"
+  expect_exit 2 "$kolsky" run s.json -o o.h5 --gauges-csv nodir/g.csv; grep -q "^kolsky: error: --gauges-csv: cannot write 'nodir/g.csv'" err.txt || fail "gauges path message: $(cat err.txt)"
+  [ ! -e o.h5 ] || fail "run file written although the gauge path is bad"; no_temp_files
+  ex=$repo/data/examples
+  expect_exit 2 "$kolsky" analyze "$ex/gauges_song2009_example.csv" --bars "$ex/bars_song2009.json" -o nodir/a.csv
+  grep -q "^kolsky: error: -o: cannot write 'nodir/a.csv'" err.txt || fail "analyze -o message: $(cat err.txt)"
+  awk -F, '/^[0-9]/ { printf "%s,%.10g,%.10g\n", $1, $2 * 1e150, $3 * 1e150; next } { print }' "$ex/gauges_song2009_example.csv" > huge.csv
+  expect_exit 3 "$kolsky" analyze huge.csv --bars "$ex/bars_song2009.json" -o h.csv
+  grep -q "numerical failure: analyze: w_incident_j is not finite" err.txt || fail "non-finite analysis message: $(cat err.txt)"
+  [ ! -e h.csv ] || fail "non-finite analysis written"
+  # Gauges: at most 1000 per bar; a run whose probes would pass 1 GB says so before it starts
+  # (stopped here at once by SIGTERM: exit 143, what it had kept and marked incomplete).
+  gauges=$(awk 'BEGIN { for (i = 1; i <= 1001; ++i) printf "%s%.6f", (i > 1 ? "," : ""), i * 0.0019 }')
+  sed "s/\"gauges\": \[1.0\]/\"gauges\": [$gauges]/" s.json > many.json
+  expect_exit 2 "$kolsky" run many.json; grep -q "many.json: bars.incident.gauges: at most 1000 gauges per bar" err.txt || fail "gauge limit message: $(cat err.txt)"
+  scene big.json ""; sed -i 's/"end": 0.6e-3/"end": 5/' big.json
+  "$kolsky" run big.json -o big.h5 >out.txt 2>err.txt & pid=$!
+  for i in $(seq 100); do grep -q "warning: the probes will take about" err.txt && break; sleep 0.1; done
+  kill -TERM $pid; wait $pid; rc=$?
+  grep -q "warning: the probes will take about [0-9.]* GB" err.txt || fail "no size warning: $(cat err.txt)"
+  [ "$rc" -eq 143 ] || fail "exit $rc after SIGTERM (want 143): $(cat err.txt)"
+  h5dump -a /meta/complete big.h5 | grep -q "(0): 0" || fail "stopped run not marked incomplete"; no_temp_files
+  # A sibling output that fails after the run (its folder removed meanwhile): the run file is
+  # kept but not marked complete, names the failure, and the command exits 1.
+  dem_scene d.json ""; sed -i 's/"end": 200e-6/"end": 3e-3/' d.json; mkdir sub
+  "$kolsky" run d.json -o d.h5 --gauges-csv sub/g.csv >out.txt 2>err.txt & pid=$!
+  for i in $(seq 600); do grep -q "steps of" err.txt && break; sleep 0.1; done
+  rmdir sub; wait $pid; rc=$?
+  [ "$rc" -eq 1 ] || fail "exit $rc with a failed sibling output (want 1): $(cat err.txt)"
+  grep -q "error: --gauges-csv: .*d.h5 kept, marked incomplete" err.txt || fail "sibling message: $(cat err.txt)"
+  h5dump -a /meta/complete d.h5 | grep -q "(0): 0" || fail "run file marked complete beside a failed output"
+  h5dump -a /meta/meta_json d.h5 | grep -q "output_failure" || fail "output failure not in /meta"; no_temp_files ;;
+signals)
+  # SIGINT during a DEM run with snapshots and checkpoints: it stops at the next step, keeps
+  # the run file and the particle file marked incomplete, leaves no temporary, exits 130.
+  dem_scene d.json ', "snapshot_interval": 50e-6'; sed -i 's/"end": 200e-6/"end": 50e-3/' d.json
+  "$kolsky" run d.json -o run.h5 --checkpoint-every 20e-6 >out.txt 2>err.txt & pid=$!
+  for i in $(seq 600); do grep -q "steps of" err.txt && break; sleep 0.1; done  # packed, running
+  sleep 1; kill -INT $pid; wait $pid; rc=$?
+  [ "$rc" -eq 130 ] || fail "exit $rc after SIGINT (want 130): $(cat err.txt)"
+  grep -q "SIGINT: stopped on request" err.txt || fail "stop message: $(cat err.txt)"
+  for f in run.h5 run.particles.h5; do
+    h5dump -a /meta/complete $f | grep -q "(0): 0" || fail "$f not marked incomplete"; done
+  [ -s run.ckpt.h5 ] && [ -s run.xmf ] || fail "outputs missing: $(ls)"
+  no_temp_files ;;
 *) fail "unknown case" ;;
 esac
 echo "PASS [$case_name]"
