@@ -35,17 +35,7 @@ std::string write(const testing::TempDir& dir, const std::string& name, const st
   return path;
 }
 
-// The InputError f throws (a failure when it throws nothing).
-template <class F>
-InputError input_error(F&& f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e;
-  }
-  ADD_FAILURE() << "no InputError";
-  return InputError("", "", "");
-}
+using testing::input_error;
 
 TEST(BadInput, DuplicateKeysAreRefusedNamingTheKey) {
   const testing::TempDir dir;

@@ -12,6 +12,7 @@
 #include "core/errors.hpp"
 #include "scene/json_reader.hpp"
 #include "scene/scene.hpp"
+#include "test_support.hpp"
 
 namespace {
 
@@ -38,17 +39,7 @@ json::json_pointer pointer(std::string dotted) {
   return json::json_pointer("/" + dotted);
 }
 
-/// The error f throws; a test failure if it throws none.
-template <class F>
-InputError input_error(F&& f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e;
-  }
-  ADD_FAILURE() << "expected an InputError";
-  return InputError("", "", "");
-}
+using kolsky::testing::input_error;
 
 bool contains(const std::string& s, const std::string& part) {
   return s.find(part) != std::string::npos;

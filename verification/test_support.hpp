@@ -1,5 +1,5 @@
-// Small helpers shared by the GoogleTest files: a per-test scratch directory and a way to attach
-// measured numbers to a test's XML/JSON output.
+// Small helpers shared by the GoogleTest files: a per-test scratch directory, a way to attach
+// measured numbers to a test's XML/JSON output, and the InputError a call throws.
 #pragma once
 #include <gtest/gtest.h>
 #include <unistd.h>
@@ -9,7 +9,21 @@
 #include <iterator>
 #include <string>
 
+#include "core/errors.hpp"
+
 namespace kolsky::testing {
+
+/// The InputError f throws; a test failure if it throws none.
+template <class F>
+InputError input_error(F&& f) {
+  try {
+    f();
+  } catch (const InputError& e) {
+    return e;
+  }
+  ADD_FAILURE() << "expected an InputError";
+  return InputError("", "", "");
+}
 
 /// A fresh directory per test (named after the test and the process), removed afterwards.
 class TempDir {
