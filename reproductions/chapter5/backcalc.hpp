@@ -1,0 +1,39 @@
+// The strength back-calculation of Sec. 5.3.1 as a procedure (the text did it by hand): the
+// sigma_lim0 at which an upscaled specimen's stress-strain curve is closest, in RMS at equal
+// strain, to the reference specimen's. GSL's Brent minimiser on ln(sigma_lim0), after a
+// bracketing search; every evaluation is one DEM run, so evaluations are cached and capped.
+#pragma once
+#include <functional>
+#include <map>
+#include <string>
+
+#include "chapter5/ch5.hpp"
+
+namespace kolsky::ch5 {
+
+struct BackCalcSettings {
+  double guess = 0;           ///< Pa: the bracket's middle (Eq. 5.17's value)
+  double factor = 1.5;        ///< the first bracket is [guess / factor, guess * factor]
+  double rel_tol = 0.03;      ///< stop when the bracket is narrower than this (relative)
+  int max_evaluations = 8;
+  double stress_lo = 1e6, stress_hi = 1e12;  ///< Pa: compared where the reference lies in it
+};
+
+struct BackCalcResult {
+  double sigma = NAN;         ///< Pa, best evaluated
+  double score = NAN;         ///< Pa, RMS stress difference there
+  double bracket_lo = NAN, bracket_hi = NAN;  ///< Pa, the final bracket
+  bool converged = false;     ///< the bracket reached rel_tol
+  std::map<double, double> evaluated;  ///< sigma -> score, every run
+  CaseResult best;            ///< the run at sigma
+  std::string note;
+};
+
+/// `run(sigma)` runs the candidate specimen; `reference` is the curve to match.
+BackCalcResult back_calculate(const std::function<CaseResult(double)>& run, const CaseResult& reference,
+                              const BackCalcSettings& s);
+
+/// RMS stress difference of c from the reference at equal strain (Pa; +inf for a failed run).
+double curve_score(const CaseResult& c, const CaseResult& reference, double lo, double hi);
+
+}  // namespace kolsky::ch5

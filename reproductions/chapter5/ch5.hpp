@@ -1,0 +1,108 @@
+// Chapter 5 reproduction helpers: one breakage case (a scene of this folder with the driver's
+// changes: upscaling factor, sigma_lim0, coordination limit, breakage on or off), what it
+// records (stress-strain, grain counts, broken parents, B_r, grain-size curves over time), and
+// the comparisons Sec. 5.3 makes on such cases (curves at equal strain, downscaled grain-size
+// curves at equal stress).
+#pragma once
+#include <cmath>
+#include <cstdio>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "psd/grain_size_curve.hpp"
+
+namespace kolsky::ch5 {
+
+/// printf into a std::string (any arguments; the drivers' repro::fmt takes one double).
+template <class... A>
+std::string fmt(const char* f, A... a) {
+  const int n = std::snprintf(nullptr, 0, f, a...);
+  std::string s(n > 0 ? n : 0, '\0');
+  if (n > 0) std::snprintf(s.data(), s.size() + 1, f, a...);
+  return s;
+}
+
+/// What a case changes in its scene (a negative / empty value keeps the scene's).
+struct CaseSpec {
+  std::string label;
+  std::string scene;          ///< file name in reproductions/chapter5/
+  double upscale = -1;        ///< specimen.upscale
+  double sigma_lim0 = -1;     ///< specimen.breakage.sigma_lim0, Pa
+  int coordination_limit = -1;
+  bool breakage = true;       ///< false: the breakage block is removed
+  double end_time = -1;       ///< time.end, s
+  double fines_d_min = -1;    ///< m in the *original* sand (x N in the specimen)
+};
+
+/// One grain-size curve of the specimen (grains + fines) at time t, in the specimen's sizes.
+struct CurveAt {
+  double t = 0;
+  psd::GrainSizeCurve curve;
+};
+
+struct CaseResult {
+  CaseSpec spec;
+  bool ok = false;
+  std::string failure;
+  double upscale = 1, wall_s = 0, pack_s = 0, dt = 0, simulated_s = 0;
+  long steps = 0;
+  std::size_t grains_initial = 0, grains_final = 0;
+  // The stress-strain record (strain-rate walls: the walls; bars: the classic analysis, t = 0
+  // at the arrival): strain (Eq. 5.1 / 1.1), back-face (TB) and average stress, Pa.
+  std::vector<double> t, strain, stress_back, stress_avg;
+  // Probes of the breakage on the same samples as t (empty without breakage).
+  std::vector<double> grain_count, broken_primary, broken_secondary, relative_breakage;
+  std::vector<CurveAt> curves;  ///< every microsecond of a breakage run
+  // Bar runs only: stresses at the gauges against time from the incident bar's free end (Pa).
+  std::vector<double> gauge_t, gauge_incident, gauge_transmission;
+  double arrival_time = 0;
+  double coordination_final = NAN;  ///< grain contacts per grain at the end
+};
+
+/// Runs `spec` on its scene (relative paths against `dir`), with the packing cached in
+/// `cache` (created). Prints a progress line per 10 % of the run.
+CaseResult run_case(const CaseSpec& spec, const std::string& dir, const std::string& cache, unsigned perturb_seed = 0);
+
+/// The scene of a case as it is run; perturb_seed > 0 moves every float of the scene file by
+/// one ulp first (common/perturb.hpp, for `make rebaseline`).
+nlohmann::json case_scene(const CaseSpec& spec, const std::string& dir, const std::string& cache,
+                          unsigned perturb_seed = 0);
+
+/// Back stress of c at strain e on its loading branch (up to its largest strain), linear
+/// between samples; NaN outside it.
+double stress_at_strain(const CaseResult& c, double e);
+
+/// Index of the first sample with v >= level, or -1.
+long first_at_least(const std::vector<double>& v, double level);
+
+/// RMS and largest difference of b's stress from a's at a's strains where both are defined and
+/// a's stress lies in [lo, hi] (Pa); NaN when fewer than 3 points compare.
+struct CurveDifference {
+  double rms = NAN, max = NAN;
+  int points = 0;
+};
+CurveDifference stress_difference(const std::vector<double>& strain_a, const std::vector<double>& stress_a,
+                                  const std::vector<double>& strain_b, const std::vector<double>& stress_b,
+                                  double lo, double hi);
+
+/// The case's grain-size curve at the first sample whose back stress reaches `stress`,
+/// downscaled by the case's N (diameters / N); empty curve if it never does.
+psd::GrainSizeCurve curve_at_stress(const CaseResult& c, double stress, double* time = nullptr);
+
+/// RMS difference (percentage points) of two curves' percent passing, over log-spaced sizes
+/// in [lo, hi] (m) where both are defined.
+double passing_difference(const psd::GrainSizeCurve& a, const psd::GrainSizeCurve& b, double lo, double hi);
+
+/// Broken parents (primary + secondary) at the first sample with back stress >= s; NaN if never.
+double broken_at_stress(const CaseResult& c, double stress);
+
+nlohmann::json read_json(const std::string& path);
+
+/// Yield stress of a broken-count curve on a semi-log plot (Fig. 5.12): the intersection of the
+/// two straight lines (count against log10 stress) that fit it best with one break point, the
+/// construction used for yield on e-log p curves; NaN with fewer than 6 points above zero count.
+double bilinear_yield(const std::vector<double>& stress, const std::vector<double>& count);
+
+
+}  // namespace kolsky::ch5
