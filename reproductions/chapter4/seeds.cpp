@@ -74,6 +74,23 @@ std::string pm(const Stat& s, double scale, const char* f) {
 
 }  // namespace
 
+FreeScatter calibrated_vs_free(const std::vector<SeedCase>& cases, double k_calibrated) {
+  FreeScatter f;
+  double g = 0;
+  for (const auto& c : cases) {
+    if (c.k != k_calibrated || !c.ok) continue;
+    for (const auto& o : cases)
+      if (o.seed == c.seed && o.k == 1.0 && o.ok) {
+        f.d.push_back(c.m.modulus_back / o.m.modulus_back - 1);
+        g += static_cast<double>(c.grains);
+      }
+  }
+  if (f.d.empty()) return f;
+  const Stat s = stat(f.d);
+  f.mean = s.mean, f.sd = s.sd, f.grains = g / f.d.size();
+  return f;
+}
+
 std::string seed_table(const std::vector<SeedCase>& cases, const std::vector<double>& ks,
                        double k_calibrated) {
   std::string t =

@@ -28,6 +28,14 @@ std::vector<SeedCase> seed_study(const nlohmann::json& j, const std::string& sce
                                  const std::string& dir, double n, const std::vector<double>& seeds,
                                  const std::vector<double>& ks, double limit);
 
+/// M 1-10 MPa of the calibrated k relative to k = 1, seed by seed (M(k_cal) / M(1) - 1), with
+/// its mean and sample standard deviation (NaN below two seeds) and the mean grain count.
+struct FreeScatter {
+  std::vector<double> d;
+  double mean = NAN, sd = NAN, grains = NAN;
+};
+FreeScatter calibrated_vs_free(const std::vector<SeedCase>& cases, double k_calibrated);
+
 /// Markdown: one row per case, then mean and standard deviation over the seeds of each
 /// measure per k, and for each Sec. 4.4 ordering the number of seeds in which it holds.
 std::string seed_table(const std::vector<SeedCase>& cases, const std::vector<double>& ks,
