@@ -30,7 +30,7 @@ void DemSystem::for_each_touching_contact(Pair&& pair, Wall&& wall) const {
       double overlap = 0.0;
       if (slots.kind(s) == WallKind::plane) {
         const PlaneState& w = planes_[slots.index(s)];
-        const Vec3 base = w.wall.point + w.offset * w.wall.normal;
+        const Vec3 base = w.wall.point + plane_offset_at(w, p_.x[i]) * w.wall.normal;
         normal = -w.wall.normal;
         overlap = p_.radius[i] - dot(p_.x[i] - base, w.wall.normal);
       } else {
@@ -38,7 +38,7 @@ void DemSystem::for_each_touching_contact(Pair&& pair, Wall&& wall) const {
         const double dx = p_.x[i].x - w.wall.cx, dy = p_.x[i].y - w.wall.cy;
         const double rho = std::sqrt(dx * dx + dy * dy);
         normal = rho > 0 ? Vec3{dx / rho, dy / rho, 0} : Vec3{1, 0, 0};
-        overlap = p_.radius[i] + rho - (w.wall.radius + w.u);
+        overlap = p_.radius[i] + rho - tube_radius_at(w, p_.x[i]);
       }
       wall(i, s, normal, overlap, wall_normal_[c]);
     }

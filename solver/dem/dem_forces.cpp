@@ -111,7 +111,8 @@ void DemSystem::plane_forces(const Law& law, int k, double dt) {
   const PlaneState& s = planes_[k];
   const Vec3 nw = s.wall.normal;
   const Vec3 base = s.wall.point + s.offset * nw;
-  const Vec3 v_wall = s.speed * nw;
+  const Vec3 v_plane = s.speed * nw;
+  const bool profiled = s.profile.has_value();
   const int slot = WallSlots{n_planes(), n_cylinders()}.slot(WallKind::plane, k);
   const auto c0 = static_cast<std::ptrdiff_t>(wall_first_[slot]);
   const auto c1 = static_cast<std::ptrdiff_t>(wall_first_[slot + 1]);
@@ -119,7 +120,9 @@ void DemSystem::plane_forces(const Law& law, int k, double dt) {
 #pragma omp for schedule(dynamic, kWallChunk) nowait
   for (std::ptrdiff_t c = c0; c < c1; ++c) {
     const int i = wall_particle_[c];
-    const double overlap = p_.radius[i] - dot(p_.x[i] - base, nw);
+    // A profiled plane (drive_plane_profile) sits at its offset at this grain's station.
+    const double overlap = profiled ? p_.radius[i] - dot(p_.x[i] - s.wall.point, nw) + plane_offset_at(s, p_.x[i])
+                                    : p_.radius[i] - dot(p_.x[i] - base, nw);
     if (overlap <= 0) {
       out.active[c] = 0;
       wall_history_[c] = Vec3{};
@@ -127,7 +130,8 @@ void DemSystem::plane_forces(const Law& law, int k, double dt) {
     }
     Vec3 torque;
     const ContactResult r =
-        wall_contact(law.pair(p_.material[i]), overlap, -nw, v_wall, p_.radius[i], p_.radius[i],
+        wall_contact(law.pair(p_.material[i]), overlap, -nw, profiled ? plane_velocity_at(s, p_.x[i]) : v_plane,
+                     p_.radius[i], p_.radius[i],
                      p_.mass[i], p_.v[i], p_.omega[i], wall_history_[c], dt, torque);
     out.out[c] = {r.force, torque, r.dissipated, r.elastic_energy};
     wall_normal_[c] = r.normal_force;
@@ -138,7 +142,6 @@ void DemSystem::plane_forces(const Law& law, int k, double dt) {
 template <class Law>
 void DemSystem::tube_forces(const Law& law, int k, double dt) {
   const TubeState& t = tubes_[k];
-  const double radius = t.wall.radius + t.u;
   const int slot = WallSlots{n_planes(), n_cylinders()}.slot(WallKind::cylinder, k);
   const auto c0 = static_cast<std::ptrdiff_t>(wall_first_[slot]);
   const auto c1 = static_cast<std::ptrdiff_t>(wall_first_[slot + 1]);
@@ -149,6 +152,7 @@ void DemSystem::tube_forces(const Law& law, int k, double dt) {
     const double dx = p_.x[i].x - t.wall.cx, dy = p_.x[i].y - t.wall.cy;
     const double rho = std::sqrt(dx * dx + dy * dy);
     const double r = p_.radius[i];
+    const double radius = tube_radius_at(t, p_.x[i]);  // the profile at the grain's z, if driven
     const double overlap = r + rho - radius;
     if (overlap <= 0) {
       out.active[c] = 0;
@@ -160,7 +164,7 @@ void DemSystem::tube_forces(const Law& law, int k, double dt) {
     const double r_eff = radius > r ? r * radius / (radius - r) : r;
     Vec3 torque;
     const ContactResult res =
-        wall_contact(law.pair(p_.material[i]), overlap, n, t.u_dot * n, r_eff, r, p_.mass[i],
+        wall_contact(law.pair(p_.material[i]), overlap, n, tube_velocity_at(t, p_.x[i], n), r_eff, r, p_.mass[i],
                      p_.v[i], p_.omega[i], wall_history_[c], dt, torque);
     out.out[c] = {res.force, torque, res.dissipated, res.elastic_energy};
     wall_normal_[c] = res.normal_force;
@@ -240,7 +244,7 @@ void DemSystem::compute_forces(double dt) {
       if (wall_out_.active[c]) sum += wall_normal_[c];
     if (slots.kind(w) == WallKind::plane) {
       PlaneState& s = planes_[slots.index(w)];
-      s.work += 0.5 * (s.force + sum) * (s.offset - s.offset_at_force);
+      if (!s.profile) s.work += 0.5 * (s.force + sum) * (s.offset - s.offset_at_force);
       s.offset_at_force = s.offset;
       s.force = sum;
     } else {

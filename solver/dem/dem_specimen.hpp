@@ -68,6 +68,10 @@ class DemSpecimen {
   FaceState faces_at_release() const { return release_faces_; }
 
   const DemSystem& system() const { return sys_; }
+  /// The system itself, for the FE-DEM coupling (coupling/fe_dem.hpp), which shapes the walls
+  /// (DemSystem::drive_plane_profile, drive_cylinder) and steps the system without forces() /
+  /// advance(); a specimen is driven one way or the other, never both.
+  DemSystem& coupled_system() { return sys_; }
 
   /// Turns on particle breakage (Sec. 5.2.3, breakage_engine.hpp): every check_interval steps,
   /// between two steps, the grains that meet the criteria are replaced by their daughters.

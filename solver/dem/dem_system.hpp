@@ -7,6 +7,7 @@
 // sqrt(m/k) of the stiffest linear contact, tube ring mode). Details: docs/dem.md.
 #pragma once
 #include <cstddef>
+#include <optional>
 #include <vector>
 
 #include "dem/contact_law.hpp"
@@ -116,6 +117,26 @@ class DemSystem {
   /// evaluation.
   void drive_plane(int plane, double offset, double speed);
 
+  /// Gives DrivenPlane k a deformed shape for the coming force evaluation (walls.hpp,
+  /// WallProfile; stations: distance from the z axis, so the plane's normal must be +-z):
+  /// a grain at distance rho from the axis meets the plane shifted by profile.at(rho).offset
+  /// along its normal, moving at that station's speeds. The plane's scalar offset and speed
+  /// are then unused, and its work on the grains is left out of DemEnergy::wall_work (the
+  /// caller that deforms it books the interface work; docs/coupling.md). Throws InputError.
+  void drive_plane_profile(int plane, WallProfile profile);
+  /// Gives rigid cylinder k (no compliance) a deformed shape: stations z, offset the outward
+  /// radial displacement of the surface at that z (radius + offset), normal_speed its rate,
+  /// tangential_speed the surface's axial velocity. Throws InputError.
+  void drive_cylinder(int cylinder, WallProfile profile);
+  /// Calls f(i, force on grain i) for every touching contact of wall `slot` (WallSlots) of the
+  /// last force evaluation, in candidate (particle) order: the contact forces a deformable
+  /// wall's owner maps back onto its surface (the wall feels minus them).
+  template <class F> void for_each_wall_force(int slot, F&& f) const {
+    if (!forces_valid_ || wall_first_.size() <= static_cast<std::size_t>(slot) + 1) return;
+    for (int c = wall_first_[slot]; c < wall_first_[slot + 1]; ++c)
+      if (wall_out_.active[c]) f(wall_particle_[c], wall_out_.out[c].force);
+  }
+
   /// Largest dt step() accepts (s): the raw limit, min over the Rayleigh step of the smallest
   /// grain, sqrt(m/k) of the stiffest linear contact and the tube ring mode, with no safety
   /// factor in it. The loop that steps the system applies its own fraction once (the scene's
@@ -163,6 +184,7 @@ class DemSystem {
   double plane_speed(int k) const { return planes_[k].speed; }
   /// Total normal contact force between plane k and the particles (compression +, N).
   double plane_force(int k) const { return planes_[k].force; }
+  const CylinderWall& cylinder(int k) const { return tubes_[k].wall; }
   /// Total outward radial contact force on cylinder k (N) and its radial displacement (m).
   double cylinder_force(int k) const { return tubes_[k].force; }
   double cylinder_displacement(int k) const { return tubes_[k].u; }
@@ -202,11 +224,24 @@ class DemSystem {
     PlaneWall wall;
     double offset = 0, speed = 0, offset_at_build = 0;
     double force = 0, offset_at_force = 0, work = 0;
+    std::optional<WallProfile> profile;  // drive_plane_profile
+    WallProfile profile_at_build;        // the profile at the last list rebuild
   };
   struct TubeState {
     CylinderWall wall;
     double u = 0, u_dot = 0, u_at_build = 0, force = 0, stiffness = 0, mass = 0;
+    std::optional<WallProfile> profile;  // drive_cylinder
+    WallProfile profile_at_build;
   };
+  // The surface a grain at x meets: the plane's offset along its normal (profile or scalar),
+  // and the cylinder's radius; with the wall velocity there (the shared geometry of the force
+  // kernels, the candidate lists and for_each_touching_contact).
+  static double plane_offset_at(const PlaneState& s, const Vec3& x);
+  static double tube_radius_at(const TubeState& t, const Vec3& x);
+  static Vec3 plane_velocity_at(const PlaneState& s, const Vec3& x);
+  static Vec3 tube_velocity_at(const TubeState& t, const Vec3& x, const Vec3& n);
+  // How far a profile moved since the list was built (m): a bound on the surface's shift.
+  static double profile_shift(const std::optional<WallProfile>& now, const WallProfile& at_build);
   // Per-contact outputs. ContactOut is what the gathering particle receives (for a pair: the
   // partner j, since i sums its own side while computing; for a wall: the grain), and the
   // contact's stored energy: one 64-byte cache line per contact, so that the scattered store

@@ -33,6 +33,34 @@ double VelocityHistory::displacement(double t0, double t1) const {
   return sum + 0.5 * (va + at(t1)) * (t1 - ta);
 }
 
+std::pair<int, double> WallProfile::segment(double s) const {
+  const auto n = static_cast<int>(station.size());
+  if (s <= station.front()) return {0, 0.0};
+  if (s >= station.back()) return {n - 2, 1.0};
+  const int k = static_cast<int>(std::upper_bound(station.begin(), station.end(), s) - station.begin()) - 1;
+  return {k, (s - station[k]) / (station[k + 1] - station[k])};
+}
+
+WallProfile::Sample WallProfile::at(double s) const {
+  const auto [k, w] = segment(s);
+  auto lerp = [k, w](const std::vector<double>& v) { return (1 - w) * v[k] + w * v[k + 1]; };
+  return {lerp(offset), lerp(normal_speed), lerp(tangential_speed)};
+}
+
+void validate(const WallProfile& p, const char* path) {
+  const std::string at(path);
+  const std::size_t n = p.station.size();
+  if (n < 2 || p.offset.size() != n || p.normal_speed.size() != n || p.tangential_speed.size() != n)
+    throw InputError("", at, "station, offset, normal_speed and tangential_speed need one size >= 2");
+  for (std::size_t k = 0; k < n; ++k) {
+    if (!std::isfinite(p.station[k]) || !std::isfinite(p.offset[k]) || !std::isfinite(p.normal_speed[k]) ||
+        !std::isfinite(p.tangential_speed[k]))
+      throw InputError("", at, "every value must be finite");
+    if (k > 0 && !(p.station[k] > p.station[k - 1]))
+      throw InputError("", at + ".station", "must be strictly increasing");
+  }
+}
+
 double TubeCompliance::radial_stiffness(double radius) const {
   return 2 * std::numbers::pi * height * youngs_modulus * thickness / radius;
 }

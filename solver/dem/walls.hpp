@@ -7,6 +7,7 @@
 // lists: WallSlots is its one slot rule. SI units.
 #pragma once
 #include <optional>
+#include <utility>
 #include <variant>
 #include <vector>
 
@@ -41,6 +42,29 @@ struct PlaneWall {
   PlaneMotion motion = FixedPlane{};
   WallLaw law = linear_spring(LinearParams{});  ///< Table 4.1 wall contact
 };
+
+/// A deformable wall's shape, set from outside each step (DemSystem::drive_plane_profile,
+/// drive_cylinder; the FE-DEM coupling, docs/coupling.md): piecewise linear in a station s
+/// (a plane normal to z: the distance from the z axis; a cylinder: z), held constant beyond
+/// the first and last stations. offset: displacement of the surface along the wall's normal
+/// into the grains (plane) or outward radial displacement (cylinder), m; normal_speed its rate,
+/// m/s; tangential_speed the surface's velocity along s (radial for a plane, axial for a
+/// cylinder), m/s, which only friction and damping see. The normal stays the wall's own (z, or
+/// radial): the surface's slope d offset / ds (~1e-4 in an SHPB) tilts it by that angle, which
+/// is neglected (docs/coupling.md). Stations strictly increasing, all arrays of one size >= 2.
+struct WallProfile {
+  std::vector<double> station, offset, normal_speed, tangential_speed;
+
+  struct Sample { double offset = 0, normal_speed = 0, tangential_speed = 0; };
+  /// The linear interpolation at s (held beyond the ends).
+  Sample at(double s) const;
+  /// Segment index k (station[k] <= s < station[k+1], clamped to [0, n-2]) and the weight w of
+  /// node k+1 (1 - w on node k; 0 or 1 beyond the ends): the linear shape functions.
+  std::pair<int, double> segment(double s) const;
+};
+/// Throws kolsky::InputError (path) unless the arrays have one size >= 2, the stations
+/// increase strictly and every value is finite.
+void validate(const WallProfile& p, const char* path);
 
 /// Thin elastic confining tube (radial compliance of CylinderWall).
 struct TubeCompliance {

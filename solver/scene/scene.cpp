@@ -14,6 +14,7 @@
 #include "scene/csv_load.hpp"
 #include "scene/json_reader.hpp"
 #include "scene/scene_internal.hpp"
+#include "shpb/fe_dem_bars.hpp"
 
 namespace kolsky::scene {
 
@@ -188,6 +189,29 @@ shpb::SpecimenSpec read_specimen(JsonReader& r, const std::string& base_dir) {
   return c;
 }
 
+// specimen.tube with a dem specimen (docs/coupling.md): rigid, the grains' own cylinder (the
+// default; not resolved when absent, so DEM scenes keep their resolved form), or meshed, an FE
+// tube in the FE-DEM coupling (bars.kind = meshed only).
+void read_dem_tube(JsonReader& r, shpb::ExperimentSpec& e) {
+  if (!r.has("specimen.tube")) return;
+  const std::string kind = r.text("specimen.tube");
+  if (kind == "rigid") return;
+  if (kind != "meshed")
+    r.fail("specimen.tube", "'" + kind + "' is not a tube of a dem specimen: rigid or meshed (meshed needs "
+                            "bars.kind = meshed)");
+  if (e.strain_rate || e.bar_kind != shpb::BarKind::meshed)
+    r.fail("specimen.tube", "a meshed tube around a dem specimen needs bars.kind = meshed (the FE-DEM "
+                            "coupling, docs/coupling.md)");
+  fe::MeshedTube t;
+  t.material = {r.number("specimen.tube_youngs_modulus"), r.number("specimen.tube_poisson_ratio"),
+                r.number("specimen.tube_density")};
+  t.thickness = r.number("specimen.tube_thickness");
+  t.length = r.number("specimen.tube_length");
+  if (t.length < shpb::specimen_length(e.specimen))
+    r.fail("specimen.tube_length", "the meshed tube must be at least as long as the specimen");
+  e.dem_tube = t;
+}
+
 shpb::TimeSpec read_time(JsonReader& r, const shpb::SpecimenSpec& specimen, bool walls) {
   shpb::TimeSpec t;
   t.end_time = r.number("time.end");
@@ -270,6 +294,14 @@ Scene parse_scene(const nlohmann::json& j, const std::string& file, const std::s
   e.time = read_time(r, e.specimen, walls);
   e.output.interval = r.number("output.interval");
   if (dem_specimen) e.output.snapshot_interval = r.number("output.snapshot_interval");
+  if (dem_specimen) read_dem_tube(r, e);
+  if (dem_specimen && !walls && e.bar_kind == shpb::BarKind::meshed) {
+    try {  // what the FE-DEM coupling refuses, named with the scene file
+      (void)shpb::fe_dem_params(e);
+    } catch (const InputError& err) {
+      r.fail(err.path(), err.rule());
+    }
+  }
   r.finish();
   s.resolved = r.resolved();
   return s;

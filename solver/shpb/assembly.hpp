@@ -7,7 +7,8 @@
 //                           (1-D column | FeSpecimen | DemSpecimen), coupled through the face
 //                           DOFs of core/specimen_coupling.hpp (4 scalars in, 2 out)
 //   (b) MeshedBarsAssembly  meshed FE bars + FE specimen (+ tube) as one FE body (fe::MeshedShpb)
-//   (c) not yet             meshed FE bars + FE tube + DEM specimen: see "Seam (c)" below
+//   (c) FeDemBarsAssembly   meshed FE bars (+ FE tube) + DEM specimen, coupled surface by
+//                           surface (coupling/fe_dem.hpp): see "Seam (c)" below
 //   (d) StrainRateWallsAssembly  no bars: a DEM specimen between a wall driven by a tabulated
 //                           strain rate and a fixed wall (Sec. 5.2.1, methodology 1), through
 //                           the same face interface; chosen by spec.strain_rate
@@ -25,8 +26,7 @@
 //
 // Seam (c), coupled FEM-DEM (Chapter 3: DEM grains in an FE tube between FE bars). It joins
 // ShpbAssembly as a third alternative with the members above, and make_assembly picks it for
-// bars.kind = meshed with specimen.model = dem (refused today as "meshed bars need
-// specimen.model = fe"). The face interface of core/specimen_coupling.hpp cannot carry it: the
+// bars.kind = meshed with specimen.model = dem. The face interface of core/specimen_coupling.hpp cannot carry it: the
 // grains touch the meshed bar faces and the tube wall node by node, none of them plane or
 // rigid. Each step hands the DEM the positions and velocities at t^n of the FE nodes on those
 // surfaces, and hands the FE the nodal forces at t^n of the grain contacts on them, before
@@ -39,19 +39,23 @@
 #include <variant>
 
 #include "shpb/experiment.hpp"
+#include "shpb/fe_dem_bars.hpp"
 #include "shpb/meshed_bars.hpp"
 #include "shpb/one_dim_bars.hpp"
 #include "shpb/strain_rate_walls.hpp"
 
 namespace kolsky::shpb {
 
-using ShpbAssembly = std::variant<OneDimBarsAssembly, MeshedBarsAssembly, StrainRateWallsAssembly>;
+using ShpbAssembly =
+    std::variant<OneDimBarsAssembly, MeshedBarsAssembly, StrainRateWallsAssembly, FeDemBarsAssembly>;
 
 /// The alternative spec.strain_rate, spec.bar_kind and spec.specimen ask for, built in place
 /// (no copy of the bodies). Throws InputError (no file; paths "bars.kind", "fe.*",
 /// "specimen.*", ...).
 inline ShpbAssembly make_assembly(const ExperimentSpec& spec) {
   if (spec.strain_rate) return ShpbAssembly(std::in_place_type<StrainRateWallsAssembly>, spec);
+  if (spec.bar_kind == BarKind::meshed && std::holds_alternative<dem::DemSpecimenParams>(spec.specimen))
+    return ShpbAssembly(std::in_place_type<FeDemBarsAssembly>, spec);
   if (spec.bar_kind == BarKind::meshed) return ShpbAssembly(std::in_place_type<MeshedBarsAssembly>, spec);
   return ShpbAssembly(std::in_place_type<OneDimBarsAssembly>, spec);
 }

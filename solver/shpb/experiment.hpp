@@ -85,6 +85,9 @@ struct ExperimentSpec {
   BarMeshSpec bar_mesh;
   bar::Pulse pulse = bar::TrapezoidPulse{};
   SpecimenSpec specimen = bar::ColumnParams{};
+  /// A DEM specimen's tube as an FE mesh (specimen.tube = meshed, bars.kind = meshed only: the
+  /// FE-DEM coupling, coupling/fe_dem.hpp); unset: the grains' rigid cylinder.
+  std::optional<fe::MeshedTube> dem_tube;
   TimeSpec time;
   OutputSpec output;
 };

@@ -20,7 +20,7 @@ fe::MeshedBar meshed_bar(const BarSpec& b) {
 
 fe::MeshedShpbParams meshed_params(const ExperimentSpec& spec) {
   const auto* fe_params = std::get_if<fe::FeSpecimenParams>(&spec.specimen);
-  if (!fe_params) throw InputError("", "bars.kind", "meshed bars need specimen.model = fe");
+  if (!fe_params) throw InputError("", "bars.kind", "meshed bars need specimen.model = fe or dem");
   if (spec.incident.gauges.empty() || spec.transmission.gauges.empty())
     throw InputError("", "bars.kind", "meshed bars need a gauge on each bar (the face waves come from them)");
   fe::MeshedShpbParams p;
