@@ -4,6 +4,8 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <optional>
+#include <type_traits>
 
 #include "core/errors.hpp"
 #include "core/stability_check.hpp"
