@@ -141,18 +141,18 @@ std::vector<ParamSpec> build_table() {
   s.add(VT::choice, "specimen.tube", "rigid", "-", kNoRange,
         "Confining tube: none, rigid, spring (massless Lame wall) or meshed; a dem specimen's "
         "is rigid or meshed, meshed only with bars.kind = meshed (the FE-DEM coupling, "
-        "docs/coupling.md)",
+        "docs/coupling.md; it reads the tube_* keys then)",
         "specimen.model=fe|dem", {"none", "rigid", "spring", "meshed"});
   s.add(VT::number, "specimen.tube_youngs_modulus", mt.material.youngs_modulus, "Pa", kPositive,
-        "Tube E (steel 200e9, polycarbonate 1.4e9; Sec. 2.3.1)", "specimen.model=fe|dem");
+        "Tube E (steel 200e9, polycarbonate 1.4e9; Sec. 2.3.1)", "specimen.model=fe");
   s.add(VT::number, "specimen.tube_poisson_ratio", mt.material.poisson_ratio, "-", kPoisson,
-        "Tube Poisson ratio (steel 0.33, polycarbonate 0.3)", "specimen.model=fe|dem");
+        "Tube Poisson ratio (steel 0.33, polycarbonate 0.3)", "specimen.model=fe");
   s.add(VT::number, "specimen.tube_density", mt.material.density, "kg/m^3", kPositive,
-        "Tube density (steel 8100, polycarbonate 1500)", "specimen.model=fe|dem");
+        "Tube density (steel 8100, polycarbonate 1500)", "specimen.model=fe");
   s.add(VT::number, "specimen.tube_thickness", mt.thickness, "m", kPositive,
-        "Tube wall thickness (not given in the text: a choice)", "specimen.model=fe|dem");
+        "Tube wall thickness (not given in the text: a choice)", "specimen.model=fe");
   s.add(VT::number, "specimen.tube_length", mt.length, "m", kPositive,
-        "Meshed tube length, at least the specimen length", "specimen.model=fe|dem");
+        "Meshed tube length, at least the specimen length", "specimen.model=fe");
   s.add(VT::number, "specimen.friction_faces", fep.friction_faces, "-", kNonNegative,
         "Coulomb friction at both bar faces (Sec. 2.4.2: 0 or 0.2)", "specimen.model=fe");
   s.add(VT::number, "specimen.friction_tube", fep.friction_tube, "-", kNonNegative,
