@@ -152,16 +152,27 @@ TEST(ShpbAssembly, MeshedBarsBuildNoOneDimensionalBarsOrSpecimen) {
   EXPECT_TRUE(std::holds_alternative<bar::CharacteristicBar>(one_dim.incident_bar()));
 }
 
-TEST(ShpbAssembly, MeshedBarsRefuseANonFeSpecimenBeforeBuildingIt) {
-  // An unbuildable DEM specimen (no grain-size curve): packing it would throw its own error.
-  // Meshed bars must answer with theirs first, without packing.
+TEST(ShpbAssembly, MeshedBarsRefuseAColumnSpecimenAndCoupleADemOne) {
+  // Meshed bars take an fe specimen, or a dem one through the FE-DEM coupling (issue 16,
+  // docs/coupling.md); a 1-D column specimen is refused with the bars' own error.
   shpb::ExperimentSpec spec = spec_of(scene("meshed", kFe));
+  spec.specimen = spec_of(scene("characteristic", kColumn)).specimen;
+  try {
+    shpb::SimulatedShpb sim(spec);
+    ADD_FAILURE() << "meshed bars accepted a column specimen";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.path(), "bars.kind");
+  }
+  // An unbuildable dem specimen (no grain-size curve) now reaches the coupled assembly, which
+  // packs it: the packing's own error, not the bars'.
   spec.specimen = dem::DemSpecimenParams{};
   try {
     shpb::SimulatedShpb sim(spec);
-    ADD_FAILURE() << "meshed bars accepted a dem specimen";
+    ADD_FAILURE() << "an empty grain-size curve was packed";
   } catch (const InputError& e) {
-    EXPECT_EQ(e.path(), "bars.kind");
+    ADD_FAILURE() << "refused as " << e.path() << ": " << e.what();
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("grain-size curve"), std::string::npos) << e.what();
   }
 }
 
