@@ -71,6 +71,10 @@ CsvTable read_csv(const std::string& path) {
   if (std::filesystem::is_directory(path, ec)) throw InputError(path, "", "is a directory, not a CSV file");
   std::ifstream in(path);
   if (!in) throw InputError(path, "", std::string("cannot open: ") + std::strerror(errno));
+  return parse_csv(in, path);
+}
+
+CsvTable parse_csv(std::istream& in, const std::string& path) {
   CsvTable t;
   bool first_row = true;
   size_t line_no = 0;

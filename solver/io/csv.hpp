@@ -5,6 +5,7 @@
 // other cell a number (nan/inf accepted). No quoting: names and values must not contain commas.
 #pragma once
 #include <cstddef>
+#include <iosfwd>
 #include <string>
 #include <vector>
 
@@ -27,6 +28,9 @@ struct CsvTable {
 /// open"), a file without header or data, a ragged row, a non-numeric data cell, or an empty or
 /// duplicate column name.
 CsvTable read_csv(const std::string& path);
+/// The same rules for a table read from `in` (the fuzz targets parse from memory); `path`
+/// names it in errors.
+CsvTable parse_csv(std::istream& in, const std::string& path);
 
 /// Writes t atomically: each line of `comment` as "# line", then the header (if any), then the
 /// rows with %.10g. Throws std::invalid_argument naming path if the header size or the column

@@ -22,7 +22,11 @@ std::string at_line(size_t line) { return "line " + std::to_string(line); }
 
 CsvColumns read_two_column_csv(const std::string& path, const std::string& x_name,
                                const std::string& y_name) {
-  const io::CsvTable t = io::read_csv(path);  // format, header detection, ragged rows
+  return two_columns(io::read_csv(path), path, x_name, y_name);  // format, header, ragged rows
+}
+
+CsvColumns two_columns(const io::CsvTable& t, const std::string& path, const std::string& x_name,
+                       const std::string& y_name) {
   if (t.columns.size() != 2)
     throw InputError(path, t.lines.empty() ? "" : at_line(t.lines.front()),
                      "expected 2 columns (" + x_name + ", " + y_name + "), found " +
@@ -54,7 +58,11 @@ void require_increasing(const std::string& path, const CsvColumns& c,
 }  // namespace
 
 Table1D load_pulse_table(const std::string& path) {
-  const CsvColumns c = read_two_column_csv(path, "time_s", "stress_pa");
+  return pulse_table(io::read_csv(path), path);
+}
+
+Table1D pulse_table(const io::CsvTable& table, const std::string& path) {
+  const CsvColumns c = two_columns(table, path, "time_s", "stress_pa");
   require_increasing(path, c, c.x, "time_s");
   Table1D t;
   t.x = c.x;
@@ -63,7 +71,11 @@ Table1D load_pulse_table(const std::string& path) {
 }
 
 Table1D load_strain_rate_table(const std::string& path) {
-  const CsvColumns c = read_two_column_csv(path, "time_s", "strain_rate");
+  return strain_rate_table(io::read_csv(path), path);
+}
+
+Table1D strain_rate_table(const io::CsvTable& table, const std::string& path) {
+  const CsvColumns c = two_columns(table, path, "time_s", "strain_rate");
   if (!c.header.empty() && (c.header[0] != "time_s" || c.header[1] != "strain_rate"))
     throw InputError(path, "",
                      "the header must read time_s,strain_rate (1/s), got " + c.header[0] + "," +
@@ -79,7 +91,11 @@ Table1D load_strain_rate_table(const std::string& path) {
 }
 
 Table1D load_loading_curve(const std::string& path) {
-  const CsvColumns c = read_two_column_csv(path, "strain", "stress_pa");
+  return loading_curve(io::read_csv(path), path);
+}
+
+Table1D loading_curve(const io::CsvTable& table, const std::string& path) {
+  const CsvColumns c = two_columns(table, path, "strain", "stress_pa");
   if (c.x[0] != 0.0 || c.y[0] != 0.0)
     throw InputError(
         path, at_line(c.line[0]),

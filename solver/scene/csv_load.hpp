@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "core/table.hpp"
+#include "io/csv.hpp"
 
 namespace kolsky::scene {
 
@@ -22,6 +23,14 @@ struct CsvColumns {
 /// non-comment row is taken as a header if any of its fields is not a number.
 CsvColumns read_two_column_csv(const std::string& path, const std::string& x_name,
                                const std::string& y_name);
+
+/// The same rules for a table already read (the fuzz targets parse from memory); `path`
+/// names it in errors. The load_* functions below are read_csv followed by these.
+CsvColumns two_columns(const io::CsvTable& t, const std::string& path, const std::string& x_name,
+                       const std::string& y_name);
+Table1D pulse_table(const io::CsvTable& t, const std::string& path);
+Table1D strain_rate_table(const io::CsvTable& t, const std::string& path);
+Table1D loading_curve(const io::CsvTable& t, const std::string& path);
 
 /// Pulse table (time_s, stress_pa): at least 2 rows, time strictly increasing.
 Table1D load_pulse_table(const std::string& path);

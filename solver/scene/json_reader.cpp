@@ -144,7 +144,10 @@ json read_json_file(const std::string& path) {
   if (!in) throw InputError(path, "", std::string("cannot open the file: ") + std::strerror(errno));
   std::ostringstream buf;
   buf << in.rdbuf();
-  const std::string text = buf.str();
+  return parse_json_text(buf.str(), path);
+}
+
+json parse_json_text(std::string_view text, const std::string& path) {
   PathTracker tracker;
   try {
     return json::parse(text, std::ref(tracker));

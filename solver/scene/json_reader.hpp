@@ -17,6 +17,8 @@ namespace kolsky::scene {
 /// Reads and parses a JSON file. Throws InputError(path, "", rule) if it cannot be opened or
 /// on a syntax error ("JSON syntax error at line L, column C: ...").
 nlohmann::json read_json_file(const std::string& path);
+/// The same for a document already in memory (the fuzz targets); `path` names it in errors.
+nlohmann::json parse_json_text(std::string_view text, const std::string& path);
 
 /// 1-based line and column of the character at 1-based byte offset `byte` (as reported by
 /// nlohmann::json::parse_error::byte); offsets past the end point just after the last byte.

@@ -26,29 +26,6 @@ std::vector<Probe> empty_probes(const ProbeRecords& records) {
 
 }  // namespace
 
-double specimen_length(const SpecimenSpec& s) {
-  struct {
-    double operator()(const bar::ColumnParams& c) const { return c.length; }
-    double operator()(const fe::FeSpecimenParams& f) const { return f.length; }
-    double operator()(const dem::DemSpecimenParams& d) const { return d.packing.length; }
-  } v;
-  return std::visit(v, s);
-}
-
-double default_safety_factor(const SpecimenSpec& s) {
-  const bool dem = std::holds_alternative<dem::DemSpecimenParams>(s);
-  return dem ? kDefaultSafetyFactor * dem::kDemStepFraction : kDefaultSafetyFactor;
-}
-
-double specimen_diameter(const SpecimenSpec& s) {
-  struct {
-    double operator()(const bar::ColumnParams& c) const { return c.diameter; }
-    double operator()(const fe::FeSpecimenParams& f) const { return 2.0 * f.radius; }
-    double operator()(const dem::DemSpecimenParams& d) const { return d.packing.diameter; }
-  } v;
-  return std::visit(v, s);
-}
-
 double incident_arrival_time(BarKind kind, const BarSpec& b) {
   const auto& g = b.geometry;
   if (kind == BarKind::sphere_chain) {
