@@ -4,9 +4,11 @@ BUILD   ?= build
 JOBS    ?= $(shell nproc 2>/dev/null || echo 2)
 CMAKE_FLAGS ?= -DCMAKE_BUILD_TYPE=Release
 REPORTS ?= reports
+SANITIZE_BUILD ?= build-sanitize
+FUZZ_SECONDS ?= 60
 SETS    := verification bars chapter2 chapter4 chapter5
 
-.PHONY: all build deps configure test check reproduce bench help clean rebaseline gate \
+.PHONY: all build deps configure test check reproduce bench help clean rebaseline gate fuzz \
         reproduce-verification reproduce-bars \
         reproduce-chapter2 reproduce-chapter3 reproduce-chapter4 reproduce-chapter5
 
@@ -29,7 +31,8 @@ help:
 	@echo "  make bench         Google Benchmark -> benchmarks/results/<date>_<commit>_<bench>.json"
 	@echo "  make bench-summary figures and tables of benchmarks/results/ -> $(REPORTS)/benchmarks/"
 	@echo "  make bench-check   short run; fails if a speed ratio (kolsky / reference) fell below the tracked one (~1 min)"
-	@echo "  make clean         remove $(BUILD)/ and $(REPORTS)/"
+	@echo "  make fuzz          each libFuzzer target (scene, BARS.json, CSV tables, gauge records) for FUZZ_SECONDS (default 60) each, ASan + UBSan, in $(SANITIZE_BUILD)/"
+	@echo "  make clean         remove $(BUILD)/, $(SANITIZE_BUILD)/ and $(REPORTS)/"
 
 deps:
 	@bash scripts/install-deps.sh
@@ -76,5 +79,9 @@ bench-summary: build
 bench-check: build
 	@bash scripts/bench-check.sh $(BUILD) benchmarks/results
 
+# The sanitized build of the input layer (fuzz/CMakeLists.txt, docs/fuzzing.md); clang.
+fuzz: deps
+	@FUZZ_SECONDS=$(FUZZ_SECONDS) bash scripts/sanitize.sh fuzz $(SANITIZE_BUILD)
+
 clean:
-	rm -rf $(BUILD) $(REPORTS)
+	rm -rf $(BUILD) $(SANITIZE_BUILD) $(REPORTS)

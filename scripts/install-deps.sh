@@ -28,6 +28,8 @@ packages=(
   libhdf5-dev hdf5-tools                     # HDF5 C library and h5dump
   nlohmann-json3-dev                         # JSON scenes
   gnuplot-nox                                # plots (pngcairo terminal)
+  clang-14 libclang-rt-14-dev                # make fuzz, make check-sanitize (libFuzzer,
+                                             # ASan/UBSan runtimes; not a clang-14 dependency)
 )
 if [ "$peers" -eq 1 ]; then
   # lmp (LAMMPS 2022, GRANULAR, Open MPI) and liggghts (3.8.0); mpirun comes with openmpi-bin.
