@@ -137,6 +137,32 @@ TEST(PsdSampling, RejectsBadInput) {
                InvalidCurve);
   EXPECT_THROW(sample_passing(std::vector<double>{}, std::vector<double>{1e-4}),
                std::invalid_argument);
+  EXPECT_THROW(holds_a_grain(c, 0.0, 1), std::invalid_argument);
+  EXPECT_THROW(holds_a_grain(c, 1.0, 1, 1000), std::invalid_argument);
+}
+
+// holds_a_grain is what the scene reader asks of every DEM specimen: the answer of the full
+// draw, over volumes from below one smallest grain to many grains, for several seeds.
+TEST(PsdSampling, HoldsAGrainAgreesWithTheSample) {
+  const auto c = test_curve();
+  int empty = 0, full = 0;
+  for (double v = sphere(0.05e-3); v < 1e3 * sphere(0.6e-3); v *= 1.7)
+    for (std::uint64_t seed : {1, 2, 3}) {
+      const bool any = !sample_diameters(c, v, seed).empty();
+      EXPECT_EQ(holds_a_grain(c, v, seed), any) << "volume " << v << " seed " << seed;
+      (any ? full : empty)++;
+    }
+  EXPECT_GT(empty, 0);  // both answers occur
+  EXPECT_GT(full, 0);
+}
+
+// Found by fuzz_scene (fuzz/corpus/scene/regress_dem_sampling_hang.json): the reader drew the
+// whole sample to see that it was not empty, seconds and hundreds of MB for a 1 m specimen of
+// fine grains. holds_a_grain does not draw the sample: 1e15 grains (beyond any memory) answer
+// at once; the old check would never return here.
+TEST(PsdSampling, HoldsAGrainCostDoesNotGrowWithTheVolume) {
+  const auto c = test_curve();
+  EXPECT_TRUE(holds_a_grain(c, 1e15 * sphere(0.3e-3), 1, static_cast<std::size_t>(1e16)));
 }
 
 }  // namespace

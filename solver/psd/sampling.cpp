@@ -17,27 +17,28 @@ namespace {
 
 double sphere_volume(double d) { return std::numbers::pi / 6.0 * d * d * d; }
 
-// Appends grains to `out` until the cumulative volume `v_cum` reaches `target`, drawing each
-// diameter with `draw()`. The grain that would overshoot is kept only if that lands closer to
-// the target, so afterwards |v_cum - target| <= v(last draw)/2 (or v_cum > target already).
-template <class Draw>
-void fill_to(double target, Draw&& draw, std::vector<double>& out, double& v_cum) {
+// Draws grains until the cumulative volume `v_cum` reaches `target`, drawing each diameter
+// with `draw()` and handing each kept one to `keep(d)`. The grain that would overshoot is kept
+// only if that lands closer to the target, so afterwards |v_cum - target| <= v(last draw)/2
+// (or v_cum > target already). Returns false as soon as keep() does (the caller stops).
+template <class Draw, class Keep>
+bool fill_to(double target, Draw&& draw, Keep& keep, double& v_cum) {
   while (v_cum < target) {
     const double d = draw();
     const double v = sphere_volume(d);
     const bool overshoots = v_cum + v > target;
     if (!overshoots || (v_cum + v - target) < (target - v_cum)) {
-      out.push_back(d);
       v_cum += v;
+      if (!keep(d)) return false;
     }
     if (overshoots) break;  // kept or not, the bin is now within v/2 of its target
   }
+  return true;
 }
 
-}  // namespace
-
-std::vector<double> sample_diameters(const GrainSizeCurve& curve, double solid_volume,
-                                     std::uint64_t seed, std::size_t max_grains) {
+/// The expected grain count, after checking the curve, the volume and the limit.
+double checked_expected_count(const GrainSizeCurve& curve, double solid_volume,
+                              std::size_t max_grains) {
   curve.validate();
   if (!(std::isfinite(solid_volume) && solid_volume > 0.0))
     throw std::invalid_argument("sample_diameters: solid volume must be finite and > 0 m^3");
@@ -46,17 +47,23 @@ std::vector<double> sample_diameters(const GrainSizeCurve& curve, double solid_v
     throw std::invalid_argument("sample_diameters: about " + std::to_string(expected) +
                                 " grains expected, more than the limit of " +
                                 std::to_string(max_grains) + " (check the units of the volume)");
+  return expected;
+}
 
+/// The stratified draw (sampling.hpp), fine to coarse, each kept diameter handed to keep(d),
+/// which returns false to stop: sample_diameters keeps them all, holds_a_grain stops at the
+/// first. Both see the same draws for the same curve, volume and seed.
+template <class Keep>
+void draw_sample(const GrainSizeCurve& curve, double solid_volume, std::uint64_t seed,
+                 Keep keep) {
   const auto& x = curve.diameter;
   const auto& p = curve.percent_passing;
   Xoshiro256ss rng(seed);
-  std::vector<double> out;
-  out.reserve(static_cast<std::size_t>(expected * 1.02) + 16);
   double v_cum = 0.0;
 
   // The lump at the smallest size (first row's passing): identical grains.
   const double d0 = x.front();
-  fill_to(p.front() / 100.0 * solid_volume, [d0] { return d0; }, out, v_cum);
+  if (!fill_to(p.front() / 100.0 * solid_volume, [d0] { return d0; }, keep, v_cum)) return;
 
   for (std::size_t k = 1; k < x.size(); ++k) {
     if (!(p[k] > p[k - 1])) continue;  // an empty bin holds no grains
@@ -71,10 +78,31 @@ std::vector<double> sample_diameters(const GrainSizeCurve& curve, double solid_v
       return std::clamp(std::pow(ia - u * (ia - ib), -1.0 / 3.0), above_a, b);
     };
     // The last bin's target is the whole volume (p = 100 exactly, by validation).
-    fill_to(p[k] / 100.0 * solid_volume, draw, out, v_cum);
+    if (!fill_to(p[k] / 100.0 * solid_volume, draw, keep, v_cum)) return;
   }
+}
+
+}  // namespace
+
+std::vector<double> sample_diameters(const GrainSizeCurve& curve, double solid_volume,
+                                     std::uint64_t seed, std::size_t max_grains) {
+  const double expected = checked_expected_count(curve, solid_volume, max_grains);
+  std::vector<double> out;
+  out.reserve(static_cast<std::size_t>(expected * 1.02) + 16);
+  draw_sample(curve, solid_volume, seed, [&out](double d) {
+    out.push_back(d);
+    return true;
+  });
   std::sort(out.begin(), out.end(), std::greater<double>());
   return out;
+}
+
+bool holds_a_grain(const GrainSizeCurve& curve, double solid_volume, std::uint64_t seed,
+                   std::size_t max_grains) {
+  checked_expected_count(curve, solid_volume, max_grains);
+  bool any = false;
+  draw_sample(curve, solid_volume, seed, [&any](double) { return !(any = true); });
+  return any;
 }
 
 double solid_volume(std::span<const double> diameters) {

@@ -30,6 +30,13 @@ std::vector<double> sample_diameters(const GrainSizeCurve& curve, double solid_v
                                      std::uint64_t seed,
                                      std::size_t max_grains = kMaxSampleGrains);
 
+/// Whether sample_diameters(curve, solid_volume, seed, max_grains) would return any grain,
+/// with the same checks and throws, found without drawing the sample: the draw stops at the
+/// first grain kept, so the cost is one draw per bin of the curve at most, however many grains
+/// the volume holds (the scene reader asks this of every DEM scene, dem/packing.cpp draws).
+bool holds_a_grain(const GrainSizeCurve& curve, double solid_volume, std::uint64_t seed,
+                   std::size_t max_grains = kMaxSampleGrains);
+
 /// Total solid volume of spheres with these diameters (m^3).
 double solid_volume(std::span<const double> diameters);
 

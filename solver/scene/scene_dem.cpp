@@ -22,21 +22,22 @@ void read_keys(JsonReader& r, const std::vector<LawKey<P>>& keys, P& p) {
   for (const LawKey<P>& k : keys) p.*k.field = r.number("specimen." + k.key);
 }
 
-// The grains the packing will draw (psd::sample_diameters with its volume and seed: the same
-// sample, in milliseconds), drawn here so that a specimen too small to hold a grain, or one
-// needing more grains than the sampler allows, is refused while the scene is read, under the
-// scene's key, before any packing work; the packing's own rules (the largest grain fits
-// twice across, RSA finds room) follow in dem/packing.cpp.
+// Whether the packing will draw any grain (psd::holds_a_grain: the draw of
+// psd::sample_diameters with its volume and seed, stopped at the first grain, so its cost does
+// not grow with the specimen), so that a specimen too small to hold a grain, or one needing
+// more grains than the sampler allows, is refused while the scene is read, under the scene's
+// key, before any packing work; the packing's own rules (the largest grain fits twice across,
+// RSA finds room) follow in dem/packing.cpp.
 void check_packable(JsonReader& r, const dem::PackingParams& p) {
   const double solid = psd::cylinder_volume(p.diameter, p.length) * (1 - p.porosity);
-  std::vector<double> grains;
+  bool any = false;
   try {
-    grains = psd::sample_diameters(p.curve, solid, p.seed);
+    any = psd::holds_a_grain(p.curve, solid, p.seed);
   } catch (const std::invalid_argument& e) {  // the expected count beyond kMaxSampleGrains
     r.fail("specimen.upscale", std::string(e.what()) + "; a larger specimen.upscale or a "
                                "smaller specimen");
   }
-  if (!grains.empty()) return;
+  if (any) return;
   const bool thin = p.diameter <= p.length;
   r.fail(thin ? "specimen.diameter" : "specimen.length",
          "the specimen holds no grain: its solid volume, (1 - porosity) x the cylinder, is " +
