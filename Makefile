@@ -9,6 +9,7 @@ FUZZ_SECONDS ?= 60
 SETS    := verification bars chapter2 chapter4 chapter5
 
 .PHONY: all build deps configure test check reproduce bench help clean rebaseline gate fuzz \
+        check-sanitize \
         reproduce-verification reproduce-bars \
         reproduce-chapter2 reproduce-chapter3 reproduce-chapter4 reproduce-chapter5
 
@@ -32,6 +33,7 @@ help:
 	@echo "  make bench-summary figures and tables of benchmarks/results/ -> $(REPORTS)/benchmarks/"
 	@echo "  make bench-check   short run; fails if a speed ratio (kolsky / reference) fell below the tracked one (~1 min)"
 	@echo "  make fuzz          each libFuzzer target (scene, BARS.json, CSV tables, gauge records) for FUZZ_SECONDS (default 60) each, ASan + UBSan, in $(SANITIZE_BUILD)/"
+	@echo "  make check-sanitize  the unit tests of the input layer and the small physics under ASan + UBSan (docs/fuzzing.md)"
 	@echo "  make clean         remove $(BUILD)/, $(SANITIZE_BUILD)/ and $(REPORTS)/"
 
 deps:
@@ -82,6 +84,9 @@ bench-check: build
 # The sanitized build of the input layer (fuzz/CMakeLists.txt, docs/fuzzing.md); clang.
 fuzz: deps
 	@FUZZ_SECONDS=$(FUZZ_SECONDS) bash scripts/sanitize.sh fuzz $(SANITIZE_BUILD)
+
+check-sanitize: deps
+	@bash scripts/sanitize.sh check $(SANITIZE_BUILD)
 
 clean:
 	rm -rf $(BUILD) $(SANITIZE_BUILD) $(REPORTS)

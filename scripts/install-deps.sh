@@ -30,6 +30,7 @@ packages=(
   gnuplot-nox                                # plots (pngcairo terminal)
   clang-14 libclang-rt-14-dev                # make fuzz, make check-sanitize (libFuzzer,
                                              # ASan/UBSan runtimes; not a clang-14 dependency)
+  libomp-14-dev                              # OpenMP for clang (the sanitized DEM kernels)
 )
 if [ "$peers" -eq 1 ]; then
   # lmp (LAMMPS 2022, GRANULAR, Open MPI) and liggghts (3.8.0); mpirun comes with openmpi-bin.
