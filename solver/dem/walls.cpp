@@ -42,7 +42,10 @@ std::pair<int, double> WallProfile::segment(double s) const {
 }
 
 WallProfile::Sample WallProfile::at(double s) const {
-  const auto [k, w] = segment(s);
+  // Plain copies, not a structured binding: clang 14 (the sanitizer build) cannot capture one.
+  const std::pair<int, double> seg = segment(s);
+  const int k = seg.first;
+  const double w = seg.second;
   auto lerp = [k, w](const std::vector<double>& v) { return (1 - w) * v[k] + w * v[k + 1]; };
   return {lerp(offset), lerp(normal_speed), lerp(tangential_speed)};
 }
