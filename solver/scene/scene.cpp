@@ -14,7 +14,6 @@
 #include "scene/csv_load.hpp"
 #include "scene/json_reader.hpp"
 #include "scene/scene_internal.hpp"
-#include "shpb/fe_dem_bars.hpp"
 
 namespace kolsky::scene {
 
@@ -297,7 +296,7 @@ Scene parse_scene(const nlohmann::json& j, const std::string& file, const std::s
   if (dem_specimen) read_dem_tube(r, e);
   if (dem_specimen && !walls && e.bar_kind == shpb::BarKind::meshed) {
     try {  // what the FE-DEM coupling refuses, named with the scene file
-      (void)shpb::fe_dem_params(e);
+      shpb::check_fe_dem_supported(e);
     } catch (const InputError& err) {
       r.fail(err.path(), err.rule());
     }

@@ -5,6 +5,7 @@
 
 #include <variant>
 
+#include "core/errors.hpp"
 #include "dem/dem_system.hpp"  // kDemStepFraction
 
 namespace kolsky::shpb {
@@ -30,6 +31,23 @@ double specimen_diameter(const SpecimenSpec& s) {
     double operator()(const dem::DemSpecimenParams& d) const { return d.packing.diameter; }
   } v;
   return std::visit(v, s);
+}
+
+void check_fe_dem_supported(const ExperimentSpec& spec) {
+  const dem::DemSpecimenParams& d = std::get<dem::DemSpecimenParams>(spec.specimen);
+  if (spec.bar_kind != BarKind::meshed)
+    throw InputError("", "specimen.tube", "a meshed tube around a dem specimen needs bars.kind = meshed");
+  if (spec.incident.gauges.empty() || spec.transmission.gauges.empty())
+    throw InputError("", "bars.kind", "meshed bars need a gauge on each bar (the face waves come from them)");
+  if (d.walls.hold_until_loaded)
+    throw InputError("", "specimen.hold_until_loaded",
+                     "not supported with bars.kind = meshed (the coupling steps the grains from t = 0): set it to false");
+  if (d.walls.preload_on_supports)
+    throw InputError("", "specimen.preload_on_supports",
+                     "not supported with bars.kind = meshed (the FE bars carry the full contact forces): set it to false");
+  if (d.breakage) throw InputError("", "specimen.breakage", "not supported with bars.kind = meshed");
+  if (spec.output.snapshot_interval > 0)
+    throw InputError("", "output.snapshot_interval", "particle snapshots are not supported with bars.kind = meshed yet: set it to 0");
 }
 
 }  // namespace kolsky::shpb

@@ -92,4 +92,9 @@ struct ExperimentSpec {
   OutputSpec output;
 };
 
+/// What the FE-DEM coupling (meshed bars around a dem specimen, docs/coupling.md) refuses,
+/// as InputError("", key, rule); here, beside the spec, so that the scene reader can name the
+/// scene file without linking the assemblies. Needs a dem specimen.
+void check_fe_dem_supported(const ExperimentSpec& spec);
+
 }  // namespace kolsky::shpb

@@ -29,19 +29,7 @@ const dem::DemSpecimenParams& dem_params(const ExperimentSpec& spec) {
 
 coupling::FeDemParams fe_dem_params(const ExperimentSpec& spec) {
   const dem::DemSpecimenParams& d = dem_params(spec);
-  if (spec.bar_kind != BarKind::meshed)
-    throw InputError("", "specimen.tube", "a meshed tube around a dem specimen needs bars.kind = meshed");
-  if (spec.incident.gauges.empty() || spec.transmission.gauges.empty())
-    throw InputError("", "bars.kind", "meshed bars need a gauge on each bar (the face waves come from them)");
-  if (d.walls.hold_until_loaded)
-    throw InputError("", "specimen.hold_until_loaded",
-                     "not supported with bars.kind = meshed (the coupling steps the grains from t = 0): set it to false");
-  if (d.walls.preload_on_supports)
-    throw InputError("", "specimen.preload_on_supports",
-                     "not supported with bars.kind = meshed (the FE bars carry the full contact forces): set it to false");
-  if (d.breakage) throw InputError("", "specimen.breakage", "not supported with bars.kind = meshed");
-  if (spec.output.snapshot_interval > 0)
-    throw InputError("", "output.snapshot_interval", "particle snapshots are not supported with bars.kind = meshed yet: set it to 0");
+  check_fe_dem_supported(spec);
   coupling::FeDemParams p;
   p.fe.incident = meshed_bar(spec.incident);
   p.fe.transmission = meshed_bar(spec.transmission);
