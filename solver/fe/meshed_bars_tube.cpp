@@ -15,19 +15,10 @@ void require(bool ok, const std::string& path, const std::string& rule) {
   if (!ok) throw InputError("", path, rule);
 }
 
-void check_bar(const MeshedBar& b, const std::string& side) {
-  require(b.length > 0.0, "bars." + side + ".length", "must be > 0");
-  require(b.radius > 0.0, "bars." + side + ".diameter", "must be > 0");
-  b.material.validate(("bars." + side).c_str());
-  for (double d : b.gauges)
-    require(d > 0.0 && d < b.length, "bars." + side + ".gauges", "each gauge must lie strictly inside (0, length)");
-}
-
-int axial_count(double length, double h) { return std::max(2, static_cast<int>(std::lround(length / h))); }
 
 Body build(const MeshedBarsTubeParams& p, Block& incident, Block& transmission, std::optional<Block>& tube) {
-  check_bar(p.incident, "incident");
-  check_bar(p.transmission, "transmission");
+  check_meshed_bar(p.incident, "incident");
+  check_meshed_bar(p.transmission, "transmission");
   require(p.bar_n_r >= 1, "bars.mesh_radial", "must be >= 1");
   require(p.bar_element_length > 0.0, "bars.element_length", "must be > 0");
   require(p.specimen_length > 0.0, "specimen.length", "must be > 0");
@@ -36,11 +27,11 @@ Body build(const MeshedBarsTubeParams& p, Block& incident, Block& transmission, 
   Mesh mesh;
   std::vector<Part> parts;
   incident = add_block(mesh, 0.0, p.incident.radius, -p.incident.length, 0.0, p.bar_n_r,
-                       axial_count(p.incident.length, p.bar_element_length));
+                       axial_element_count(p.incident.length, p.bar_element_length));
   parts.push_back(Part{p.incident.material, incident.first_element, incident.n_elements()});
   transmission = add_block(mesh, 0.0, p.transmission.radius, p.specimen_length,
                            p.specimen_length + p.transmission.length, p.bar_n_r,
-                           axial_count(p.transmission.length, p.bar_element_length));
+                           axial_element_count(p.transmission.length, p.bar_element_length));
   parts.push_back(Part{p.transmission.material, transmission.first_element, transmission.n_elements()});
   if (p.tube) {
     const MeshedTube& t = *p.tube;

@@ -12,28 +12,32 @@
 
 namespace kolsky::fe {
 
+void check_meshed_bar(const MeshedBar& b, const std::string& side) {
+  auto throw_unless = [](bool ok, const std::string& path, const char* rule) {
+    if (!ok) throw InputError("", path, rule);
+  };
+  throw_unless(b.length > 0.0, "bars." + side + ".length", "must be > 0");
+  throw_unless(b.radius > 0.0, "bars." + side + ".diameter", "must be > 0");
+  b.material.validate(("bars." + side).c_str());
+  for (double d : b.gauges)
+    throw_unless(d > 0.0 && d < b.length, "bars." + side + ".gauges", "each gauge must lie strictly inside (0, length)");
+}
+
+int axial_element_count(double length, double h) { return std::max(2, static_cast<int>(std::lround(length / h))); }
+
 namespace {
 
 void require(bool ok, const std::string& path, const std::string& rule) {
   if (!ok) throw InputError("", path, rule);
 }
 
-void check_bar(const MeshedBar& b, const std::string& side) {
-  require(b.length > 0.0, "bars." + side + ".length", "must be > 0");
-  require(b.radius > 0.0, "bars." + side + ".diameter", "must be > 0");
-  b.material.validate(("bars." + side).c_str());
-  for (double d : b.gauges)
-    require(d > 0.0 && d < b.length, "bars." + side + ".gauges", "each gauge must lie strictly inside (0, length)");
-}
-
-int axial_count(double length, double h) { return std::max(2, static_cast<int>(std::lround(length / h))); }
 
 // Validates p and builds specimen (+ tube), incident bar and transmission bar, in that order.
 Body build(const MeshedShpbParams& p, Block& specimen, std::optional<Block>& tube, Block& incident,
            Block& transmission) {
   const FeSpecimenParams& sp = p.specimen;
-  check_bar(p.incident, "incident");
-  check_bar(p.transmission, "transmission");
+  check_meshed_bar(p.incident, "incident");
+  check_meshed_bar(p.transmission, "transmission");
   require(p.bar_n_r >= 1, "bars.mesh_radial", "must be >= 1");
   require(p.bar_element_length > 0.0, "bars.element_length", "must be > 0");
   require(static_cast<bool>(p.applied_stress), "pulse", "meshed bars need an applied stress history");
@@ -41,10 +45,10 @@ Body build(const MeshedShpbParams& p, Block& specimen, std::optional<Block>& tub
   std::vector<Part> parts;
   add_specimen_blocks(sp, mesh, parts, specimen, tube);
   incident = add_block(mesh, 0.0, p.incident.radius, -p.incident.length, 0.0, p.bar_n_r,
-                       axial_count(p.incident.length, p.bar_element_length));
+                       axial_element_count(p.incident.length, p.bar_element_length));
   parts.push_back(Part{p.incident.material, incident.first_element, incident.n_elements()});
   transmission = add_block(mesh, 0.0, p.transmission.radius, sp.length, sp.length + p.transmission.length,
-                           p.bar_n_r, axial_count(p.transmission.length, p.bar_element_length));
+                           p.bar_n_r, axial_element_count(p.transmission.length, p.bar_element_length));
   parts.push_back(Part{p.transmission.material, transmission.first_element, transmission.n_elements()});
   return Body(std::move(mesh), std::move(parts), sp.threads);
 }

@@ -19,6 +19,7 @@
 //   it as FeSpecimen does. Units: SI.
 #pragma once
 #include <functional>
+#include <string>
 #include <vector>
 
 #include "fe/fe_specimen.hpp"
@@ -32,6 +33,12 @@ struct MeshedBar {
   double radius = 9.55e-3;                    ///< m
   std::vector<double> gauges;                 ///< distances from the specimen face, m
 };
+
+/// Throws InputError("", "bars.<side>.<key>", rule) for a non-positive length or radius, a bad
+/// material or a gauge outside (0, length); shared by MeshedShpb and MeshedBarsTube.
+void check_meshed_bar(const MeshedBar& b, const std::string& side);
+/// Axial element count of a bar of this length at element length h (at least 2).
+int axial_element_count(double length, double h);
 
 struct MeshedShpbParams {
   FeSpecimenParams specimen;       ///< specimen, tube, contact and check parameters
