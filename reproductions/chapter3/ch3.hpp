@@ -1,0 +1,74 @@
+// Chapter 3 reproduction helpers: one coupled FE-DEM (or reduced-model) SHPB case built from
+// the set's scene JSON plus a JSON merge patch (the studies file names every variant as data),
+// and what Sec. 3.4 measures on it: the stress-strain slope over 2-6 % strain, the curve up to
+// the 13 MPa cut-off (Secs. 3.3, 3.4.1: LS-DYNA's DES cannot break grains, so the text stops
+// there) and the agreement of the two face stresses (Fig. 3.4).
+#pragma once
+#include <cmath>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "harness/targets.hpp"
+#include "shpb/analysis.hpp"
+#include "shpb/run_result.hpp"
+
+namespace kolsky::ch3 {
+
+/// The scene a case runs: base scene with `patch` merged in (RFC 7386), paths against `dir`.
+struct CaseSpec {
+  std::string label;
+  nlohmann::json scene;
+  std::string scene_path;  ///< for messages (the base scene file)
+  std::string dir;         ///< folder relative paths resolve against
+};
+
+struct CaseResult {
+  std::string label;
+  bool ok = false;
+  std::string failure;
+  shpb::RunResult run;
+  shpb::SpecimenHistory h;        ///< bar-gauge analysis, t = 0 at the incident arrival
+  std::vector<double> t_if, front_if, back_if, strain_if;  ///< face probes from the arrival
+  std::vector<double> energy_error_if, delivered_if;       ///< held - delivered, delivered (J)
+  double wall_s = 0, dt = 0;
+  long steps = 0;
+  std::size_t grains = 0;
+  double porosity = NAN;          ///< of the packing as run
+  double off_axis = NAN;          ///< largest face lateral / axial contact resultant (coupled only)
+};
+
+/// Parses and runs one case; never throws for a run that fails (ok = false, failure = why),
+/// rethrows kolsky::InputError for a scene the reader refuses (the driver exits 2 with it).
+CaseResult run_case(const CaseSpec& c);
+
+/// Sec. 3.4 measurements on one case, on the face records (back-face stress from the summed
+/// contact forces, strain from the face displacements; the bar-gauge slope beside it),
+/// truncated at the first sample where the back-face stress reaches `cutoff` (13 MPa).
+struct Measures {
+  long i_end = -1;                ///< one past the last sample used
+  bool reached_cutoff = false;
+  double strain_at_cutoff = NAN, time_at_cutoff = NAN;  ///< time after the incident arrival, s
+  double slope = NAN;             ///< Pa: least-squares back-face stress vs strain, [eps_lo, eps_hi]
+  double slope_gauges = NAN;      ///< Pa: the same from the bar-gauge analysis (NaN: not covered)
+  long slope_points = 0;
+  double strain_rate = NAN;       ///< 1/s, mean Eq. 1.3 over the slope window
+  double energy_error = NAN;      ///< max |held - delivered| to the cut-off / delivered there
+  double face_gap_max = NAN;      ///< Pa, max |front - back| face stress after the ringing time
+  double face_alpha_max = NAN;    ///< max |front - back| / mean of the two, same window
+  double ringing_end = NAN;       ///< s after the arrival where the window of face_gap starts
+};
+Measures measure(const CaseResult& c, double eps_lo, double eps_hi, double cutoff,
+                 double ringing_stress);
+
+/// The back-face stress-strain curve up to the cut-off, for plots and comparisons.
+harness::Curve curve_to_cutoff(const CaseResult& c, const Measures& m);
+
+/// RMS difference of two back-face stress-strain curves at equal strain over [lo, hi], hi
+/// lowered to the smaller of the two curves' strains at the cut-off (Pa; NaN: no overlap).
+double curve_rms_difference(const CaseResult& a, const Measures& ma, const CaseResult& b,
+                            const Measures& mb, double lo, double hi);
+
+nlohmann::json read_json(const std::string& path);
+
+}  // namespace kolsky::ch3
