@@ -87,6 +87,7 @@ CaseResult run_case(const CaseSpec& spec, const std::string& dir, const std::str
     };
     const auto r = sim.run(&quiet, control);
     c.dt = r.dt;
+    c.dt_final = r.dt_final;
     c.steps = r.steps;
     c.simulated_s = r.t.empty() ? 0 : r.t.back();
     c.arrival_time = r.arrival_time;

@@ -46,6 +46,7 @@ struct CaseResult {
   bool ok = false;
   std::string failure;
   double upscale = 1, wall_s = 0, pack_s = 0, dt = 0, simulated_s = 0;
+  double dt_final = 0;  // s: below dt when breaks refined the step (docs/breakage.md, "Time step")
   long steps = 0;
   std::size_t grains_initial = 0, grains_final = 0;
   // The stress-strain record (strain-rate walls: the walls; bars: the classic analysis, t = 0

@@ -48,6 +48,8 @@ io::RunRecord to_record(const scene::Scene& sc, const shpb::RunResult& r,
   rec.meta["failure"] = r.failure;
   rec.meta["dt_s"] = r.dt;
   rec.meta["stable_dt_s"] = r.stable_dt;
+  rec.meta["dt_final_s"] = r.dt_final;  // below dt_s when breaks refined the step
+  rec.meta["dt_refinements"] = r.dt_refinements;
   rec.meta["steps"] = r.steps;
   rec.meta["arrival_time_s"] = r.arrival_time;
   rec.meta["summary"] = summary;
@@ -290,6 +292,9 @@ int cmd_run(const std::vector<std::string>& args) {
               rec.meta["complete"].get<bool>() ? "complete" : "INCOMPLETE");
   std::printf("  %-26s %ld\n  %-26s %.6g\n  %-26s %.3g\n", "steps", r.steps, "dt_s", r.dt,
               "wall_time_s", wall);
+  if (r.dt_refinements > 0)
+    std::printf("  %-26s %.6g (refined %d times after breaks)\n", "dt_final_s", r.dt_final,
+                r.dt_refinements);
   std::fputs(format_summary(summary).c_str(), stdout);
   if (!o.plot_dir.empty() && analysed)
     write_plots(plot::run_figures(r, analysis.waves, analysis.history, file), o.plot_dir, gnuplot, "run");

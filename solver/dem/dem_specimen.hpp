@@ -51,8 +51,14 @@ class DemSpecimen {
   /// Places the end walls at the face positions of t^n, completes the step in progress
   /// (forces at t^n, second half kick), returns the wall forces at t^n.
   FaceForces forces(const FaceState& faces);
-  /// Starts the step t^n -> t^{n+1}: half kick with the t^n forces, drift.
+  /// Starts the step t^n -> t^{n+1}: the breaks due now (apply_due_breaks, unless already
+  /// called for this step), half kick with the t^n forces, drift.
   void advance(double dt);
+  /// The breaks due between the forces of t^n (forces() just returned them) and the step from
+  /// t^n, every check_interval steps (or check_period); returns the number of grains broken. A caller whose dt
+  /// may follow the limit (a run that re-plans its step after a break) calls it before
+  /// choosing the dt it hands to advance(); advance() then applies none again.
+  std::size_t apply_due_breaks();
   SpecimenEnergy energy() const;
   /// (intrusion_front + intrusion_back) / L of the last forces() call.
   double mean_strain() const;
@@ -77,7 +83,11 @@ class DemSpecimen {
   /// between two steps, the grains that meet the criteria are replaced by their daughters.
   /// The system must have been built with DemOptions::smallest_radius_to_come covering the
   /// daughters (make_dem_specimen does). Throws InputError for bad parameters.
-  void enable_breakage(const BreakageParams& p, std::uint64_t seed, int check_interval);
+  /// check_period > 0 (s) checks instead once that much simulated time has passed since the
+  /// last check: the same cadence in time whatever dt is (a run whose dt is refined after
+  /// breaks starts at a step several times the up-front one; docs/breakage.md, "Checks").
+  void enable_breakage(const BreakageParams& p, std::uint64_t seed, int check_interval,
+                       double check_period = 0.0);
   /// The breakage state (nullptr without breakage).
   const BreakageState* breakage() const { return breakage_ ? &*breakage_ : nullptr; }
   int front_plane() const { return front_; }
@@ -107,6 +117,9 @@ class DemSpecimen {
   std::optional<BreakageState> breakage_;
   int check_interval_ = 1;
   long steps_since_check_ = 0;
+  double check_period_ = 0;       // s; 0: every check_interval_ steps
+  double time_since_check_ = 0;   // s, advanced by advance(dt)
+  bool breaks_done_ = false;  // apply_due_breaks ran for the step advance() is about to take
 };
 
 }  // namespace kolsky::dem

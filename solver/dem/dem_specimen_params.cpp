@@ -36,13 +36,16 @@ DemSpecimen make_dem_specimen(const DemSpecimenParams& p) {
         throw InputError("", "specimen.breakage", "needs specimen.contact_law = hertz_mindlin (Eq. 5.13 "
                                                   "is a criterion on the Hertz contact pressure)");
       validate(*p.breakage);
-      // The step is fixed up front for the smallest daughter the comminution limit allows.
-      options.smallest_radius_to_come = smallest_radius_to_come(*p.breakage, packed.particles);
+      // A step fixed up front must already suit the smallest daughter the comminution limit
+      // allows; a re-planned one follows the grains present.
+      if (p.step_for_daughters_up_front)
+        options.smallest_radius_to_come = smallest_radius_to_come(*p.breakage, packed.particles);
     }
     const std::uint64_t seed = p.packing.seed;
     DemSpecimen specimen(std::move(packed.particles), materials, make_contact_law(materials, p.contact), walls,
                          options);
-    if (p.breakage) specimen.enable_breakage(*p.breakage, seed, p.breakage_check_interval);
+    if (p.breakage)
+      specimen.enable_breakage(*p.breakage, seed, p.breakage_check_interval, p.breakage_check_period);
     return specimen;
   } catch (const InputError& e) {
     throw rename_input_error(e, p.input_names);

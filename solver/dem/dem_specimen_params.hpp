@@ -41,6 +41,15 @@ struct DemSpecimenParams {
   /// 0.443, the scatter of a chaotic DEM run (docs/breakage.md). 50 steps of a Chapter-5 dt
   /// (~2e-9 s) are 0.1 us of a ~100 us loading.
   int breakage_check_interval = 50;
+  /// Simulated time between breakage checks (s); 0: every breakage_check_interval steps. For a
+  /// run whose dt is refined after breaks, where a step count is no fixed time (docs/breakage.md).
+  double breakage_check_period = 0.0;
+  /// Whether stable_dt() covers, from the start, the smallest daughter the comminution limit
+  /// allows (DemOptions::smallest_radius_to_come). True for a run whose dt is fixed for its
+  /// whole length; false for one that asks the limit again after every break and refines its
+  /// dt (time_loop::refine; the strain-rate walls with time.dt = 0): its step then follows
+  /// the smallest grain actually present (docs/breakage.md, "Time step").
+  bool step_for_daughters_up_front = true;
   std::vector<InputName> input_names;  ///< for errors while building (empty: physics names)
 };
 

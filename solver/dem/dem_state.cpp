@@ -168,6 +168,7 @@ DemSpecimenState DemSpecimen::save_state() const {
     out.kinetic_removed = b.kinetic_removed;
     out.insertion_energy = b.insertion_energy;
     out.steps_since_check = steps_since_check_;
+    out.time_since_check = time_since_check_;
     s.breakage = std::move(out);
   }
   return s;
@@ -202,6 +203,7 @@ void DemSpecimen::restore_state(const DemSpecimenState& s) {
   b.kinetic_removed = in.kinetic_removed;
   b.insertion_energy = in.insertion_energy;
   steps_since_check_ = in.steps_since_check;
+  time_since_check_ = in.time_since_check;
 }
 
 }  // namespace kolsky::dem

@@ -69,6 +69,7 @@ struct DemBreakageState {
   std::vector<double> fines_volume, fines_d_min, fines_d_max, fines_alpha;
   double kinetic_removed = 0, insertion_energy = 0;
   long steps_since_check = 0;
+  double time_since_check = 0;  ///< s, for a check period in time (check_period > 0)
 };
 
 /// DemSpecimen = DemSystem + the last face state, whether a step is in progress, and the

@@ -16,7 +16,7 @@ namespace kolsky::io {
 namespace {
 
 using h5::Handle;
-constexpr std::int64_t kFormatVersion = 1;
+constexpr std::int64_t kFormatVersion = 2;  // 2: the loop's schedule (refined dt), time_since_check
 static_assert(sizeof(dem::Vec3) == 3 * sizeof(double), "Vec3 arrays are written as n x 3 doubles");
 
 // ---- field lists: S is the state type, const or not ----
@@ -67,6 +67,35 @@ template <class S> auto loop_scalars(S& s) {
                     std::pair{"force_back", &s.forces.back}};
 }
 
+// ---- the loop's schedule (time_loop::Schedule: as planned, or refined after breaks) ----
+
+void write_schedule(hid_t g, const time_loop::Schedule& c) {
+  for (const auto& [name, v] : {std::pair{"schedule_dt", c.dt}, std::pair{"schedule_stable_dt", c.stable_dt},
+                                std::pair{"schedule_planned_dt", c.planned_dt}, std::pair{"schedule_t_base", c.t_base}})
+    h5::write_attr(g, name, v);
+  for (const auto& [name, v] : {std::pair{"schedule_n_steps", c.n_steps}, std::pair{"schedule_sample_every", c.sample_every},
+                                std::pair{"schedule_n_base", c.n_base}, std::pair{"schedule_tick_base", c.tick_base},
+                                std::pair{"schedule_ticks_per_planned_step", c.ticks_per_planned_step},
+                                std::pair{"schedule_refinements", static_cast<long>(c.refinements)}})
+    h5::write_attr(g, name, static_cast<std::int64_t>(v));
+}
+
+time_loop::Schedule read_schedule(hid_t g) {
+  time_loop::Schedule c;
+  c.dt = h5::read_attr_double(g, "schedule_dt");
+  c.stable_dt = h5::read_attr_double(g, "schedule_stable_dt");
+  c.planned_dt = h5::read_attr_double(g, "schedule_planned_dt");
+  c.t_base = h5::read_attr_double(g, "schedule_t_base");
+  const auto as_long = [&](const char* name) { return static_cast<long>(h5::read_attr_int(g, name)); };
+  c.n_steps = as_long("schedule_n_steps");
+  c.sample_every = as_long("schedule_sample_every");
+  c.n_base = as_long("schedule_n_base");
+  c.tick_base = as_long("schedule_tick_base");
+  c.ticks_per_planned_step = as_long("schedule_ticks_per_planned_step");
+  c.refinements = static_cast<int>(as_long("schedule_refinements"));
+  return c;
+}
+
 // ---- writing ----
 
 template <class List> void put_scalars(hid_t g, const List& list) {
@@ -97,6 +126,7 @@ void put_breakage(hid_t parent, const dem::DemBreakageState& b) {
   h5::write_attr(g.get(), "kinetic_removed", b.kinetic_removed);
   h5::write_attr(g.get(), "insertion_energy", b.insertion_energy);
   h5::write_attr(g.get(), "steps_since_check", static_cast<std::int64_t>(b.steps_since_check));
+  h5::write_attr(g.get(), "time_since_check", b.time_since_check);  // format 2
 }
 
 dem::DemBreakageState get_breakage(hid_t parent) {
@@ -118,6 +148,7 @@ dem::DemBreakageState get_breakage(hid_t parent) {
   b.kinetic_removed = h5::read_attr_double(g.get(), "kinetic_removed");
   b.insertion_energy = h5::read_attr_double(g.get(), "insertion_energy");
   b.steps_since_check = static_cast<long>(h5::read_attr_int(g.get(), "steps_since_check"));
+  b.time_since_check = h5::read_attr_double(g.get(), "time_since_check");
   return b;
 }
 
@@ -174,6 +205,7 @@ void write_all(hid_t file, const Checkpoint& c) {
   h5::write_attr(loop.get(), "next_step", static_cast<std::int64_t>(s.next_step));
   h5::write_attr(loop.get(), "steps", static_cast<std::int64_t>(s.partial.steps));
   put_scalars(loop.get(), loop_scalars(s));
+  write_schedule(loop.get(), s.schedule);
   h5::write_doubles(loop.get(), "prev", s.prev, 3);
   h5::write_doubles(loop.get(), "t", s.partial.t);
   Handle probes = h5::create_group(file, "probes");
@@ -283,6 +315,7 @@ Checkpoint read_all(hid_t file) {
   s.next_step = static_cast<long>(h5::read_attr_int(loop.get(), "next_step"));
   s.partial.steps = static_cast<long>(h5::read_attr_int(loop.get(), "steps"));
   get_scalars(loop.get(), loop_scalars(s));
+  s.schedule = read_schedule(loop.get());
   const std::vector<double> prev = h5::read_doubles(loop.get(), "prev");
   if (prev.size() != 3) throw std::runtime_error("loop/prev must hold 3 values");
   std::copy(prev.begin(), prev.end(), s.prev);

@@ -1,9 +1,11 @@
 // Checkpoint files of `kolsky run` (HDF5, written through a temporary name and renamed): the
 // complete shpb::ShpbState, bitwise (doubles as IEEE binary64), plus a JSON meta object (the
-// resolved scene, so a restart can refuse another scene). Layout (format_version 1):
+// resolved scene, so a restart can refuse another scene). Layout (format_version 2):
 //   /                attributes format = "kolsky-checkpoint", format_version, meta_json
 //   /loop            attributes next_step, steps, dt, stable_dt, arrival_time, w_i, w_r, w_t,
-//                    injected, force_front, force_back; datasets prev (3), t (samples)
+//                    injected, force_front, force_back, schedule_* (time_loop::Schedule: the
+//                    step as refined after breaks, its base step, tick and time; version 2);
+//                    datasets prev (3), t (samples)
 //   /probes/<k>      k = 0, 1, ... in run order: dataset value, attributes name, unit, description
 //   /bars/incident, /bars/transmission   attribute kind (characteristic | sphere_chain), state
 //   /specimen        attribute kind (column | dem), state; dem: particle arrays (n x 3 / n),

@@ -222,6 +222,7 @@ shpb::TimeSpec read_time(JsonReader& r, const shpb::SpecimenSpec& specimen, bool
     r.resolve("time.safety_factor", t.safety_factor);
   }
   t.check_stability = r.boolean("time.check_stability");
+  t.refine_after_breaks = r.boolean("time.refine_after_breaks");
   if (r.has("time.energy_tolerance")) {
     t.energy_tolerance = r.number("time.energy_tolerance");
   } else {  // documented in the table: the walls judge against their own work (experiment.hpp)

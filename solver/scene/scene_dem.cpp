@@ -117,6 +117,7 @@ dem::DemSpecimenParams read_dem_specimen(JsonReader& r, const std::string& base_
     b.fines_d_min = r.number(p + "fines_d_min");
     b.hardin_threshold *= r.number("specimen.upscale");  // 75 um at the original grain scale
     d.breakage_check_interval = r.integer(p + "check_interval");
+    d.breakage_check_period = r.number(p + "check_period");
     try {
       dem::validate(b);  // the rules between keys (var range, var_a != 0), before any packing
     } catch (const InputError& e) {

@@ -168,7 +168,7 @@ std::vector<ParamSpec> build_table() {
         "Simulated time; at most 1e10 steps (time.end / dt, time_loop::kMaxSteps), and long "
         "enough for two probe samples after the incident wave reaches the specimen");
   s.add(VT::number, "time.dt", time.dt, "s", kNonNegative,
-        "Time step; 0 = safety_factor x stable time step");
+        "Time step; 0 = safety_factor x stable time step (see time.refine_after_breaks)");
   s.add_derived(VT::number, "time.safety_factor", "0.5; 0.15 for specimen.model = dem", "-",
                 kHalfOpenUnitUpper,
                 "Fraction of the models' raw stable time step used when dt = 0 (the run's only "
@@ -178,6 +178,11 @@ std::vector<ParamSpec> build_table() {
         "or a step above a model's limit (exit 3); false lifts all of these, only to test that "
         "an unstable step is stopped once its values overflow (non-finite values always stop a "
         "run; the DEM engine always refuses a step above its grains' limit)");
+  s.add(VT::boolean, "time.refine_after_breaks", time.refine_after_breaks, "-", kNoRange,
+        "With time.dt = 0 and loading.kind = strain_rate: true refines dt after a break lowers "
+        "the stable step (faster; breakage statistics not converged at the Chapter 5 safety "
+        "factor); false plans for the smallest possible daughter from the first step "
+        "(docs/breakage.md 'Time step'; bar assemblies always plan up front)");
   s.add_derived(VT::number, "time.energy_tolerance", "0.01; 0.05 for loading.kind = strain_rate",
                 "-", kPositive,
                 "Relative energy growth that counts as a blow-up (strain-rate walls judge against "

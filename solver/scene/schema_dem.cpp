@@ -121,6 +121,10 @@ void add_breakage_rows(TableBuilder& s, const std::string& dem) {
   s.add(VT::integer, p + "check_interval", dem::DemSpecimenParams{}.breakage_check_interval, "-", at_least_one,
         "Steps between breakage checks (a check costs about one step; 1: every step; "
         "docs/breakage.md)", dem);
+  s.add(VT::number, p + "check_period", dem::DemSpecimenParams{}.breakage_check_period, "s", kNonNegative,
+        "Simulated time between breakage checks; 0 = every check_interval steps. Set it where dt "
+        "is refined after breaks (time.refine_after_breaks), so the checks keep their cadence in "
+        "time (docs/breakage.md 'Checks')", dem);
 }
 
 }  // namespace kolsky::scene::table

@@ -42,6 +42,11 @@ struct TimeSpec {
   /// false lifts the dt limit (at planning and during the run, FE included) and the energy
   /// checks, only to exercise the detector of last resort: non-finite values (exit 3).
   bool check_stability = true;
+  /// With dt = 0 and strain-rate walls: refine dt after a break lowers the limit (true), or
+  /// plan for the smallest possible daughter from the first step (false, the default: the
+  /// breakage statistics converge only at the up-front step, docs/breakage.md "Time step").
+  /// The bar assemblies always plan up front.
+  bool refine_after_breaks = false;
   /// Relative energy growth that counts as a blow-up. Scenes with strain-rate walls default to
   /// kWallsEnergyTolerance instead (set it so when building such a spec by hand).
   double energy_tolerance = 0.01;

@@ -20,8 +20,12 @@ struct RunResult {
   std::vector<Probe> probes;   ///< in the order the assembly declared them (the HDF5 order)
   bool complete = true;
   std::string failure;         ///< why the run stopped early (empty when complete)
-  double dt = 0, stable_dt = 0, arrival_time = 0;
+  double dt = 0, stable_dt = 0, arrival_time = 0;  ///< dt, stable_dt: as planned (s)
   long steps = 0;
+  /// The step at the end (s) and how often the run refined it (time_loop::refine: a break
+  /// lowered the limit); dt_final = dt when it never did.
+  double dt_final = 0;
+  int dt_refinements = 0;
 
   /// Throws std::out_of_range naming the probe and the probes this run has (a DEM probe asked
   /// of a column run, a gauge probe of a bar without gauges).

@@ -194,21 +194,38 @@ RunResult SimulatedShpb::run_on(A& assembly, Progress* progress, const RunContro
   const bool checkpointing = control.checkpoint_every > 0 && control.checkpoint;
   if ((checkpointing || control.resume) && !assembly.can_checkpoint())
     throw InputError("", "specimen.model", "checkpoint and restart are not available for the fe specimen");
+  // This run's schedule: the plan, refined during the run when a break lowers the limit.
+  time_loop::Schedule s = schedule_;
   long first = 0;
   if (control.resume) {
-    restore_state(*control.resume, r);
+    restore_state(*control.resume, r, s);
     first = control.resume->next_step;
   }
-  auto step = [&](double t, double dt) {
+  // The hooks as the assembly sees them: snapshot cadence and step index on the schedule's
+  // ticks, which are the steps themselves until a refinement.
+  RunControl hooks = control;
+  hooks.snapshot_every = control.snapshot_every * s.ticks_per_planned_step;
+  const double safety = policy(spec_).safety_factor;
+  auto step = [&](long n, double t, double dt) {
     if (control.stop && *control.stop) {
       std::ostringstream msg;
       msg << std::setprecision(6) << "stopped on request (signal) before the step at t = " << t << " s";
       throw StopRequested(msg.str());
     }
-    const long n = r.steps;  // one step per call since step 0
-    if (checkpointing && n > first && n % control.checkpoint_every == 0)
-      control.checkpoint(save_state(r, n));
-    assembly.step(n, t, dt, control);
+    if (checkpointing && n > first && s.due(n, control.checkpoint_every))
+      control.checkpoint(save_state(r, n, s));
+    if constexpr (requires { assembly.complete_to(n, t, hooks); }) {
+      if (assembly.refines_dt()) {
+        // Ask the limit again after a break, before this step's dt is used (time_loop::refine).
+        assembly.complete_to(s.tick(n), t, hooks);
+        if (assembly.apply_due_breaks() > 0 && time_loop::refine(s, n, assembly.stable_dt(), safety))
+          hooks.snapshot_every = control.snapshot_every * s.ticks_per_planned_step;
+        assembly.advance(s.dt);
+        ++r.steps;
+        return;
+      }
+    }
+    assembly.step(n, t, dt, hooks);
     ++r.steps;
   };
   auto sample = [&](double t) {
@@ -218,15 +235,15 @@ RunResult SimulatedShpb::run_on(A& assembly, Progress* progress, const RunContro
     if (spec_.time.check_stability) {
       std::ostringstream planned;
       planned << std::setprecision(6) << "the models' limit now; the run was planned against "
-              << schedule_.stable_dt << " s, so something during the run lowered it";
-      check_time_step(schedule_.dt, assembly.stable_dt(), "run", t, planned.str());
+              << s.stable_dt << " s, so something during the run lowered it";
+      check_time_step(s.dt, assembly.stable_dt(), "run", t, planned.str());
     }
     assembly.observe(t);  // throws before anything of this sample is recorded
     r.t.push_back(t);
     for (std::size_t k = 0; k < records.size(); ++k) r.probes[k].value.push_back(records[k].sample(t));
   };
   try {
-    time_loop::run_loop_from(schedule_, first, step, sample, progress);
+    time_loop::run_loop_from(s, first, step, sample, progress);
   } catch (const NumericalError& e) {
     if (progress) progress->finish();
     r.complete = false;
@@ -236,6 +253,8 @@ RunResult SimulatedShpb::run_on(A& assembly, Progress* progress, const RunContro
     r.complete = false;
     r.failure = e.what();
   }
+  r.dt_final = s.dt;
+  r.dt_refinements = s.refinements;
   assembly.finish(r);
   return r;
 }

@@ -36,6 +36,7 @@ namespace kolsky::shpb {
 struct ShpbState {
   long next_step = 0;
   RunResult partial;  ///< t, probes, steps, dt recorded so far
+  time_loop::Schedule schedule;  ///< the run's schedule then (refined after breaks, or as planned)
   BarState incident, transmission;
   SpecimenState specimen;
   FaceForces forces;
@@ -110,8 +111,8 @@ class SimulatedShpb {
   template <class A>
   RunResult run_on(A& assembly, Progress* progress, const RunControl& control);
   const OneDimBarsAssembly& one_dim(const char* accessor) const;
-  ShpbState save_state(const RunResult& r, long next_step) const;
-  void restore_state(const ShpbState& s, RunResult& r);
+  ShpbState save_state(const RunResult& r, long next_step, const time_loop::Schedule& schedule) const;
+  void restore_state(const ShpbState& s, RunResult& r, time_loop::Schedule& schedule);
   ExperimentSpec spec_;
   ShpbAssembly assembly_;
   time_loop::Schedule schedule_;

@@ -16,22 +16,29 @@ namespace {
 [[noreturn]] void misfit(const std::string& rule) { throw InputError("", "restart", rule); }
 }  // namespace
 
-ShpbState SimulatedShpb::save_state(const RunResult& r, long next_step) const {
+ShpbState SimulatedShpb::save_state(const RunResult& r, long next_step,
+                                    const time_loop::Schedule& schedule) const {
   ShpbState s;
   s.next_step = next_step;
   s.partial = r;
+  s.schedule = schedule;
   std::visit([&](const auto& a) { a.save_into(s); }, assembly_);
   return s;
 }
 
-void SimulatedShpb::restore_state(const ShpbState& s, RunResult& r) {
+void SimulatedShpb::restore_state(const ShpbState& s, RunResult& r, time_loop::Schedule& schedule) {
   std::visit([&](const auto& a) { a.check_fits(s); }, assembly_);  // bar kind, specimen model
-  if (s.partial.dt != schedule_.dt)
+  // The plan must be this run's; the checkpoint's schedule (refined or not) then continues it.
+  const time_loop::Schedule& c = s.schedule;
+  if (s.partial.dt != schedule_.dt || c.planned_dt != schedule_.dt)
     misfit("the checkpoint's time step " + std::to_string(s.partial.dt) + " s differs from this "
            "run's " + std::to_string(schedule_.dt) + " s");
-  if (s.next_step < 0 || s.next_step > schedule_.n_steps)
+  if (c.sample_every != schedule_.sample_every || c.ticks_per_planned_step < 1 ||
+      !(c.dt > 0 && c.dt <= schedule_.dt) || c.n_steps < schedule_.n_steps)
+    misfit("the checkpoint's schedule does not continue this run's plan (output cadence or dt)");
+  if (s.next_step < 0 || s.next_step > c.n_steps)
     misfit("the checkpoint lies beyond time.end (step " + std::to_string(s.next_step) + " of " +
-           std::to_string(schedule_.n_steps) + ")");
+           std::to_string(c.n_steps) + ")");
   if (s.partial.steps != s.next_step) misfit("the checkpoint's step count is inconsistent");
   // Probes by name: the checkpoint must record what this run declares, in the same order
   // (the order is the HDF5 order of the finished run file).
@@ -49,6 +56,7 @@ void SimulatedShpb::restore_state(const ShpbState& s, RunResult& r) {
   r.t = s.partial.t;
   for (std::size_t k = 0; k < r.probes.size(); ++k) r.probes[k].value = s.partial.probes[k].value;
   r.steps = s.partial.steps;
+  schedule = c;
 }
 
 }  // namespace kolsky::shpb

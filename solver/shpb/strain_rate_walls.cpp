@@ -37,22 +37,37 @@ const StrainRateHistory& history_of(const ExperimentSpec& spec) {
 
 [[noreturn]] void misfit(const std::string& rule) { throw InputError("", "restart", rule); }
 
+// With time.dt = 0 the run refines its step after each break (time.refine_after_breaks), so
+// the specimen need not plan for the smallest daughter from the first step.
+bool refines_after_breaks(const ExperimentSpec& spec) { return spec.time.dt == 0.0 && spec.time.refine_after_breaks; }
+
+dem::DemSpecimenParams params_for_run(const ExperimentSpec& spec) {
+  dem::DemSpecimenParams p = dem_params(spec);
+  p.step_for_daughters_up_front = !refines_after_breaks(spec);
+  return p;
+}
+
 }  // namespace
 
 StrainRateWallsAssembly::StrainRateWallsAssembly(const ExperimentSpec& spec)
     : history_(history_of(spec)),
       energy_tolerance_(spec.time.energy_tolerance),
       check_stability_(spec.time.check_stability),
-      specimen_(dem::make_dem_specimen(dem_params(spec))),
+      refines_dt_(refines_after_breaks(spec)),
+      specimen_(dem::make_dem_specimen(params_for_run(spec))),
       length_(specimen_.length()),
       area_(specimen_.area()) {}
 
 void StrainRateWallsAssembly::step(long n, double t, double dt, const RunControl& control) {
+  complete_to(n, t, control);
+  advance(dt);
+}
+
+void StrainRateWallsAssembly::complete_to(long n, double t, const RunControl& control) {
   // The walls at t^n: Eq. 5.1 strain over the initial length (engineering strain).
   const FaceState now{length_ * history_.strain(t), 0.0, length_ * history_.rate(t), 0.0};
   const FaceForces f = specimen_.forces(now);
   at_forces_evaluated(specimen_, n, t, control);  // positions, velocities, forces all at t^n
-  specimen_.advance(dt);
   // Wall work since the last step, trapezoid in force and displacement (the fixed wall does
   // none); at step 0 the wall has not moved (eps(0) = 0), so the initial forces_ do not count.
   const double du = now.intrusion_front - faces_.intrusion_front;

@@ -43,7 +43,16 @@ class StrainRateWallsAssembly {
 
   double stable_dt() const { return specimen_.stable_dt(); }  ///< the specimen's raw limit, s
   double arrival_time() const { return 0.0; }  ///< no wave to wait for: loading starts at t = 0
-  void step(long n, double t, double dt, const RunControl& control);
+  void step(long n, double t, double dt, const RunControl& control);  ///< complete_to + advance
+  /// Step n in two halves, for a loop that re-plans dt after a break (refines_dt()): the walls
+  /// at t^n and their forces (hooks of t^n, wall work), then the breaks due (the specimen's
+  /// limit may fall), then advance(dt) with the dt the loop chose in between.
+  void complete_to(long n, double t, const RunControl& control);
+  std::size_t apply_due_breaks() { return specimen_.apply_due_breaks(); }
+  void advance(double dt) { specimen_.advance(dt); }
+  /// Whether the loop should ask the limit again after a break and refine dt (time.dt = 0:
+  /// the specimen was then built without planning for the smallest daughter up front).
+  bool refines_dt() const { return refines_dt_; }
   /// At an output step: finiteness and the energy ledger (throws NumericalError).
   void observe(double t);
   ProbeRecords probes() const;       ///< samplers read *this (probe_record.hpp, "Lifetime")
@@ -65,6 +74,7 @@ class StrainRateWallsAssembly {
   StrainRateHistory history_;
   double energy_tolerance_;
   bool check_stability_;  // time.check_stability: the energy check is on
+  bool refines_dt_;       // time.dt = 0: dt follows the limit after breaks
   dem::DemSpecimen specimen_;
   double length_, area_;       // L0 (m), pi R^2 (m^2)
   FaceState faces_;

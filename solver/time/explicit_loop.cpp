@@ -40,7 +40,35 @@ Schedule plan_steps(const StepPolicy& p, double stable_dt) {
   // Clamped to the run (sampling only step 0 either way): a huge interval must not overflow.
   const double every = std::min(std::round(interval / s.dt), static_cast<double>(s.n_steps));
   s.sample_every = std::max(1L, static_cast<long>(every));
+  s.planned_dt = s.dt;
   return s;
+}
+
+bool refine(Schedule& s, long n, double limit, double safety_factor) {
+  const double target = safety_factor * limit;
+  if (!(target > 0.0))
+    throw NumericalError("the models' stable time step fell to " + sci(limit) + " s", s.time_of(n));
+  if (s.dt <= target) return false;
+  // The smallest integer q >= 2 with dt / q <= target: an integer so that the times of every
+  // cadence stay on the new grid; q = ceil(dt / target), bumped if round-off left it short.
+  double q = std::max(2.0, std::ceil(s.dt / target));
+  if (s.dt / q > target) q += 1.0;
+  const double remaining = static_cast<double>(s.n_steps - n) * q;
+  const double last_tick = static_cast<double>(s.tick(n)) * q + remaining;
+  if (!(static_cast<double>(n) + remaining <= kMaxSteps) || !(last_tick <= kMaxSteps))
+    throw NumericalError("the models' stable time step fell to " + sci(limit) + " s: refining dt " +
+                             sci(s.dt) + " s by " + sci(q) + " would take the run past " +
+                             sci(kMaxSteps) + " steps", s.time_of(n));
+  const long qi = static_cast<long>(q);
+  s.t_base = s.time_of(n);
+  s.tick_base = s.tick(n) * qi;
+  s.n_base = n;
+  s.n_steps = n + (s.n_steps - n) * qi;
+  s.ticks_per_planned_step *= qi;
+  s.dt /= q;
+  s.stable_dt = limit;
+  ++s.refinements;
+  return true;
 }
 
 }  // namespace kolsky::time_loop
