@@ -6,6 +6,7 @@
 //     critical damping. Stable step sqrt(m/k) (sqrt(1 + z^2) - z), with 3.5 k_s for the
 //     tangential spring (a solid sphere's contact point responds with mass m/3.5).
 #pragma once
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -20,7 +21,8 @@ namespace kolsky::dem {
                                           const CriticalDamping& damping_normal,
                                           const CriticalDamping& damping_tangential,
                                           const RollingFriction& rolling,
-                                          const ContactGeometry& g, Vec3& history, double dt) {
+                                          const ContactGeometry& g, Vec3& history, double dt,
+                                          double rolling_inverse_inertia = 0) {
   ContactResult r;
   const NormalElastic el = normal.force(g);
   const double fn =
@@ -32,7 +34,26 @@ namespace kolsky::dem {
   r.normal_force = fn;
   r.force = ft - fn * g.normal;
   r.rolling_torque = rolling.torque(g, fn);
-  if (rolling.coefficient != 0) r.dissipated -= dot(r.rolling_torque, g.omega_rel) * dt;
+  if (rolling_inverse_inertia > 0) {
+    // Model A's constant moment flips the rolling part w of omega_i - omega_j every step once
+    // the rolling has nearly stopped, and each flip feeds (M dt)^2 / (2 I) into the spins
+    // (Chapter 3 README, 'Rolling friction': at N = 2 that grew the SHPB's energy by 5 % of
+    // the pulse's work past 13 MPa). So |M| is capped at kStick |w| / (dt (1/I_i + 1/I_j)):
+    // below that rolling speed the moment is a rotational dashpot that removes at most kStick
+    // of w per step. kStick = 0.1 keeps the sum over a grain's contacts stable (explicit
+    // dashpots: sum of c dt / I < 2) up to 20 contacts of equal spheres; a large grain among
+    // small ones has its partners' inertia in 1/I_i + 1/I_j and stays far inside the bound.
+    constexpr double kStick = 0.1;
+    const Vec3 w = g.omega_rel - dot(g.omega_rel, g.normal) * g.normal;
+    double m = norm(r.rolling_torque);
+    const double cap = kStick * norm(w) / (dt * rolling_inverse_inertia);
+    if (m > cap) r.rolling_torque = (cap / m) * r.rolling_torque, m = cap;
+    // Booked at the step's mean w, w - M dt / (2 I): M w dt - (M dt)^2 / (2 I), exact for one
+    // moment (the step-start w alone books (M dt)^2 / (2 I) too much each step).
+    r.dissipated += -dot(r.rolling_torque, g.omega_rel) * dt - 0.5 * m * m * dt * dt * rolling_inverse_inertia;
+  } else if (rolling.coefficient != 0) {
+    r.dissipated -= dot(r.rolling_torque, g.omega_rel) * dt;
+  }
   return r;
 }
 
@@ -116,7 +137,16 @@ struct LsDynaPair {
     const double kn = normal_stiffness(g.r_i, g.r_j);
     return linear_contact_force(LinearNormal{kn}, LinearTangential{p.sheark * kn, p.fric},
                                 CriticalDamping{p.ndamp}, CriticalDamping{p.tdamp},
-                                RollingFriction{p.fricr}, g, history, dt);
+                                RollingFriction{p.fricr}, g, history, dt,
+                                p.fricr > 0 ? rolling_inverse_inertia(g) : 0.0);
+  }
+  /// 1/I_i + 1/I_j of the two solid spheres (I = 0.4 m r^2) from m* and the radii, the two
+  /// grains of one density (m ~ r^3: m_i = m* (r_i^3 + r_j^3) / r_j^3); a wall: 1/I_i.
+  static double rolling_inverse_inertia(const ContactGeometry& g) {
+    if (!(g.r_j < std::numeric_limits<double>::infinity())) return 1 / (0.4 * g.m_eff * g.r_i * g.r_i);
+    const double a = g.r_i * g.r_i * g.r_i, b = g.r_j * g.r_j * g.r_j;
+    const double m_i = g.m_eff * (a + b) / b, m_j = g.m_eff * (a + b) / a;
+    return 1 / (0.4 * m_i * g.r_i * g.r_i) + 1 / (0.4 * m_j * g.r_j * g.r_j);
   }
 };
 
