@@ -46,7 +46,9 @@ CaseResult run_case(const CaseSpec& spec) {
   try {
     shpb::SimulatedShpb sim(sc.spec);
     sim.require_analysable_end();
+    const auto run_start = std::chrono::steady_clock::now();  // the packing (cached) is built above
     c.run = sim.run();
+    c.run_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - run_start).count();
     c.dt = c.run.dt;
     c.steps = c.run.steps;
     if (const dem::DemSpecimen* d = dem_of(sim)) {

@@ -31,7 +31,7 @@ struct CaseResult {
   shpb::SpecimenHistory h;        ///< bar-gauge analysis, t = 0 at the incident arrival
   std::vector<double> t_if, front_if, back_if, strain_if;  ///< face probes from the arrival
   std::vector<double> energy_error_if, delivered_if;       ///< held - delivered, delivered (J)
-  double wall_s = 0, dt = 0;
+  double wall_s = 0, run_s = 0, dt = 0;  ///< whole case (with packing) / the time loop alone
   long steps = 0;
   std::size_t grains = 0;
   double porosity = NAN;          ///< of the packing as run

@@ -69,7 +69,7 @@ int main(int argc, char** argv) {
     x.eps_lo = w.at("slope_strain")[0], x.eps_hi = w.at("slope_strain")[1];
     x.cutoff = w.at("cutoff_stress"), x.ringing_stress = w.at("ringing_stress");
     std::string table = "| case | grains | x (N_scene / N_text)^3 | porosity | slope 2-6 % (MPa) | strain at 13 MPa | "
-                        "mean strain rate (1/s) | max face alpha after ringing | off-axis fraction | wall time (s) |\n"
+                        "mean strain rate (1/s) | max face alpha after ringing | off-axis fraction | wall time (s): case / time loop |\n"
                         "|---|---|---|---|---|---|---|---|---|---|\n";
     for (const auto& cs : x.studies.at("cases")) {
       const std::string id = cs.at("id");
@@ -86,7 +86,7 @@ int main(int argc, char** argv) {
                   r.m.time_at_cutoff * 1e6, r.m.energy_error, r.c.ok ? "ok" : r.c.failure.c_str(), r.c.wall_s);
       table += "| " + id + " | " + std::to_string(r.c.grains) + " | " + fmt("%.4g", to_text) + " | " + fmt("%.4f", r.c.porosity) +
                " | " + mpa(r.m.slope) + " | " + fmt("%.4f", r.m.strain_at_cutoff) + " | " + fmt("%.0f", r.m.strain_rate) + " | " +
-               fmt("%.3f", r.m.face_alpha_max) + " | " + fmt("%.2g", r.c.off_axis) + " | " + fmt("%.1f", r.c.wall_s) + " |" +
+               fmt("%.3f", r.m.face_alpha_max) + " | " + fmt("%.2g", r.c.off_axis) + " | " + fmt("%.1f", r.c.wall_s) + " / " + fmt("%.1f", r.c.run_s) + " |" +
                (r.c.ok ? "" : " failed: " + r.c.failure) + "\n";
       if (cs.value("count_target", false)) {
         M.scalar("ch3.count_" + id, static_cast<double>(r.c.grains) * to_text);
@@ -121,13 +121,13 @@ int main(int argc, char** argv) {
     M.scalar("ch3.off_axis_fraction", f.c.off_axis);
     M.note("ch3.off_axis_fraction", "friction case (frictionless faces carry no lateral force: " + fmt("%.2g", o.c.off_axis) + ")");
     M.trend("ch3.reaches_cutoff", o.m.reached_cutoff && s.m.reached_cutoff && u.m.reached_cutoff && f.m.reached_cutoff,
-            "every case's sigma_t reaches 13 MPa (strain there: original " + fmt("%.4f", o.m.strain_at_cutoff) + ")");
+            "every case's back-face stress reaches 13 MPa (strain there: original " + fmt("%.4f", o.m.strain_at_cutoff) + ")");
     x.markdown += "### Cases (Sec. 3.4)\n\n" + table;
     // Plots: the three curves, the friction pair, the shifted specimen's face stresses.
-    harness::Plot ss{"stress_strain.png", "sigma_t (Eq. 1.2) vs strain (Eq. 1.1) to 13 MPa: grain-size curves (Fig. 3.3)",
+    harness::Plot ss{"stress_strain.png", "Back-face stress vs strain (face records) to 13 MPa: grain-size curves (Fig. 3.3)",
                      "strain (-)", "stress (MPa)", {}, {}, {}};
     for (const char* id : {"original", "shifted", "monodisperse"}) ss.series.push_back(stress_strain(id, ran.at(id).c, ran.at(id).m));
-    harness::Plot fp{"friction.png", "sigma_t vs strain to 13 MPa: interface friction 0 and 0.3 (Fig. 3.5)", "strain (-)",
+    harness::Plot fp{"friction.png", "Back-face stress vs strain to 13 MPa: interface friction 0 and 0.3 (Fig. 3.5)", "strain (-)",
                      "stress (MPa)", {}, {}, {}};
     fp.series.push_back(stress_strain("frictionless", o.c, o.m));
     fp.series.push_back(stress_strain("friction 0.3", f.c, f.m));
