@@ -293,7 +293,7 @@ int cmd_run(const std::vector<std::string>& args) {
   std::printf("  %-26s %ld\n  %-26s %.6g\n  %-26s %.3g\n", "steps", r.steps, "dt_s", r.dt,
               "wall_time_s", wall);
   if (r.dt_refinements > 0)
-    std::printf("  %-26s %.6g (refined %d times after breaks)\n", "dt_final_s", r.dt_final,
+    std::printf("  %-26s %.6g (refined %ld times after breaks)\n", "dt_final_s", r.dt_final,
                 r.dt_refinements);
   std::fputs(format_summary(summary).c_str(), stdout);
   if (!o.plot_dir.empty() && analysed)

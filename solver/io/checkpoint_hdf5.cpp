@@ -64,42 +64,29 @@ template <class S> auto loop_scalars(S& s) {
                     std::pair{"arrival_time", &s.partial.arrival_time}, std::pair{"w_i", &s.w_i},
                     std::pair{"w_r", &s.w_r}, std::pair{"w_t", &s.w_t},
                     std::pair{"injected", &s.injected}, std::pair{"force_front", &s.forces.front},
-                    std::pair{"force_back", &s.forces.back}};
+                    std::pair{"force_back", &s.forces.back},
+                    // the schedule (time_loop::Schedule: as planned, or refined after breaks; format 2)
+                    std::pair{"schedule_dt", &s.schedule.dt}, std::pair{"schedule_stable_dt", &s.schedule.stable_dt},
+                    std::pair{"schedule_planned_dt", &s.schedule.planned_dt},
+                    std::pair{"schedule_t_base", &s.schedule.t_base}};
 }
-
-// ---- the loop's schedule (time_loop::Schedule: as planned, or refined after breaks) ----
-
-void write_schedule(hid_t g, const time_loop::Schedule& c) {
-  for (const auto& [name, v] : {std::pair{"schedule_dt", c.dt}, std::pair{"schedule_stable_dt", c.stable_dt},
-                                std::pair{"schedule_planned_dt", c.planned_dt}, std::pair{"schedule_t_base", c.t_base}})
-    h5::write_attr(g, name, v);
-  for (const auto& [name, v] : {std::pair{"schedule_n_steps", c.n_steps}, std::pair{"schedule_sample_every", c.sample_every},
-                                std::pair{"schedule_n_base", c.n_base}, std::pair{"schedule_tick_base", c.tick_base},
-                                std::pair{"schedule_ticks_per_planned_step", c.ticks_per_planned_step},
-                                std::pair{"schedule_refinements", static_cast<long>(c.refinements)}})
-    h5::write_attr(g, name, static_cast<std::int64_t>(v));
-}
-
-time_loop::Schedule read_schedule(hid_t g) {
-  time_loop::Schedule c;
-  c.dt = h5::read_attr_double(g, "schedule_dt");
-  c.stable_dt = h5::read_attr_double(g, "schedule_stable_dt");
-  c.planned_dt = h5::read_attr_double(g, "schedule_planned_dt");
-  c.t_base = h5::read_attr_double(g, "schedule_t_base");
-  const auto as_long = [&](const char* name) { return static_cast<long>(h5::read_attr_int(g, name)); };
-  c.n_steps = as_long("schedule_n_steps");
-  c.sample_every = as_long("schedule_sample_every");
-  c.n_base = as_long("schedule_n_base");
-  c.tick_base = as_long("schedule_tick_base");
-  c.ticks_per_planned_step = as_long("schedule_ticks_per_planned_step");
-  c.refinements = static_cast<int>(as_long("schedule_refinements"));
-  return c;
+template <class S> auto loop_counts(S& s) {
+  return std::array{std::pair{"next_step", &s.next_step}, std::pair{"steps", &s.partial.steps},
+                    std::pair{"schedule_n_steps", &s.schedule.n_steps},
+                    std::pair{"schedule_sample_every", &s.schedule.sample_every},
+                    std::pair{"schedule_n_base", &s.schedule.n_base},
+                    std::pair{"schedule_tick_base", &s.schedule.tick_base},
+                    std::pair{"schedule_ticks_per_planned_step", &s.schedule.ticks_per_planned_step},
+                    std::pair{"schedule_refinements", &s.schedule.refinements}};
 }
 
 // ---- writing ----
 
 template <class List> void put_scalars(hid_t g, const List& list) {
   for (const auto& [name, p] : list) h5::write_attr(g, name, *p);
+}
+template <class List> void put_counts(hid_t g, const List& list) {
+  for (const auto& [name, p] : list) h5::write_attr(g, name, static_cast<std::int64_t>(*p));
 }
 template <class List> void put_arrays(hid_t g, const List& list) {
   for (const auto& [name, p] : list) h5::write_doubles(g, name, *p);
@@ -202,10 +189,8 @@ void write_all(hid_t file, const Checkpoint& c) {
   h5::write_attr(file, "format_version", kFormatVersion);
   h5::write_attr(file, "meta_json", c.meta.dump());
   Handle loop = h5::create_group(file, "loop");
-  h5::write_attr(loop.get(), "next_step", static_cast<std::int64_t>(s.next_step));
-  h5::write_attr(loop.get(), "steps", static_cast<std::int64_t>(s.partial.steps));
+  put_counts(loop.get(), loop_counts(s));
   put_scalars(loop.get(), loop_scalars(s));
-  write_schedule(loop.get(), s.schedule);
   h5::write_doubles(loop.get(), "prev", s.prev, 3);
   h5::write_doubles(loop.get(), "t", s.partial.t);
   Handle probes = h5::create_group(file, "probes");
@@ -236,6 +221,9 @@ void write_all(hid_t file, const Checkpoint& c) {
 
 template <class List> void get_scalars(hid_t g, const List& list) {
   for (const auto& [name, p] : list) *p = h5::read_attr_double(g, name);
+}
+template <class List> void get_counts(hid_t g, const List& list) {
+  for (const auto& [name, p] : list) *p = static_cast<long>(h5::read_attr_int(g, name));
 }
 template <class List> void get_arrays(hid_t g, const List& list) {
   for (const auto& [name, p] : list) *p = h5::read_doubles(g, name);
@@ -312,10 +300,8 @@ Checkpoint read_all(hid_t file) {
   c.meta = nlohmann::json::parse(h5::read_attr_string(file, "meta_json"));
   shpb::ShpbState& s = c.state;
   Handle loop = h5::open_group(file, "loop");
-  s.next_step = static_cast<long>(h5::read_attr_int(loop.get(), "next_step"));
-  s.partial.steps = static_cast<long>(h5::read_attr_int(loop.get(), "steps"));
+  get_counts(loop.get(), loop_counts(s));
   get_scalars(loop.get(), loop_scalars(s));
-  s.schedule = read_schedule(loop.get());
   const std::vector<double> prev = h5::read_doubles(loop.get(), "prev");
   if (prev.size() != 3) throw std::runtime_error("loop/prev must hold 3 values");
   std::copy(prev.begin(), prev.end(), s.prev);

@@ -25,7 +25,7 @@ struct RunResult {
   /// The step at the end (s) and how often the run refined it (time_loop::refine: a break
   /// lowered the limit); dt_final = dt when it never did.
   double dt_final = 0;
-  int dt_refinements = 0;
+  long dt_refinements = 0;
 
   /// Throws std::out_of_range naming the probe and the probes this run has (a DEM probe asked
   /// of a column run, a gauge probe of a bar without gauges).

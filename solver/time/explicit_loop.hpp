@@ -37,7 +37,7 @@ struct Schedule {
   long tick_base = 0;         ///< its tick
   double t_base = 0;          ///< s, its time
   long ticks_per_planned_step = 1;
-  int refinements = 0;
+  long refinements = 0;
 
   double time_of(long n) const { return t_base + static_cast<double>(n - n_base) * dt; }
   long tick(long n) const { return tick_base + (n - n_base); }
