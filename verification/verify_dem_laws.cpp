@@ -91,24 +91,39 @@ TEST(VerifyDemLaws, LinearWallDampingRatioGivesRestitution) {
   }
 }
 
+// Two grains (r = 1 mm) held between frictionless planes with equal overlaps d (static, F_n =
+// K_n d); the upper one spins about x at 100 rad/s. Tangential friction and dashpots are off,
+// so only the rolling moment M_r = fricr R* F_n of Eq. 3.4 acts between them.
+struct RollingPair {
+  std::vector<Material> mats{{70e6, 0.2, 2650}};
+  double r = 1e-3, d = 1e-5;
+  LsDynaParams lp = [] {
+    LsDynaParams q;
+    q.fric = 0;
+    q.ndamp = q.tdamp = 0;
+    return q;
+  }();
+  LsDynaLinear law{mats, lp};
+  double kn = law.pair(0, 0).normal_stiffness(r, r);
+  Particles p = [this] {
+    Particles q;
+    q.add({0, 0, r - d}, r, 0, mats);
+    q.add({0, 0, 3 * r - 2 * d}, r, 0, mats, {}, {100, 0, 0});
+    return q;
+  }();
+  DemSystem sys = [this] {
+    DemSystem s(p, mats, law);
+    const LinearSpring wall = linear_spring(kn, 0, 0);
+    s.add_plane({{0, 0, 0}, {0, 0, 1}, FixedPlane{}, wall});
+    s.add_plane({{0, 0, 4 * r - 3 * d}, {0, 0, -1}, FixedPlane{}, wall});
+    return s;
+  }();
+};
+
 TEST(VerifyDemLaws, RollingFrictionMomentOfEq34) {
-  // Two grains held between frictionless planes with equal overlaps (static, F_n = K_n delta);
-  // the upper one spins about x. Tangential friction is off, so only M_r = fricr R* F_n acts,
-  // a constant moment opposing the relative rotation.
-  const std::vector<Material> mats{{70e6, 0.2, 2650}};
-  const double r = 1e-3, d = 1e-5;
-  LsDynaParams lp;
-  lp.fric = 0;
-  lp.ndamp = lp.tdamp = 0;
-  const LsDynaLinear law(mats, lp);
-  const double kn = law.pair(0, 0).normal_stiffness(r, r);
-  Particles p;
-  p.add({0, 0, r - d}, r, 0, mats);
-  p.add({0, 0, 3 * r - 2 * d}, r, 0, mats, {}, {100, 0, 0});
-  DemSystem sys(p, mats, law);
-  const LinearSpring wall = linear_spring(kn, 0, 0);
-  sys.add_plane({{0, 0, 0}, {0, 0, 1}, FixedPlane{}, wall});
-  sys.add_plane({{0, 0, 4 * r - 3 * d}, {0, 0, -1}, FixedPlane{}, wall});
+  // RollingPair: a constant moment opposing the relative rotation.
+  RollingPair c;
+  auto& [mats, r, d, lp, law, kn, p, sys] = c;  // the fields by name
   const double moment = lp.fricr * 0.5 * r * kn * d, inertia = p.inertia[0];
   const double dt = 1e-7, t = 5e-5;  // the pair stops rotating relatively at ~1.1e-4 s
   for (int k = 0; k < static_cast<int>(std::lround(t / dt)); ++k) sys.step(dt);
@@ -129,20 +144,8 @@ TEST(VerifyDemLaws, RollingMomentStopsTheRollingWithoutReversingIt) {
   // kStick = 0.1) it removes at most a tenth of w per step: w never changes sign, decays to
   // nothing, and the ledger (booked at the step's mean spin, exact for one moment) keeps
   // kinetic + dissipated at the initial energy.
-  const std::vector<Material> mats{{70e6, 0.2, 2650}};
-  const double r = 1e-3, d = 1e-5;
-  LsDynaParams lp;
-  lp.fric = 0;
-  lp.ndamp = lp.tdamp = 0;
-  const LsDynaLinear law(mats, lp);
-  const double kn = law.pair(0, 0).normal_stiffness(r, r);
-  Particles p;
-  p.add({0, 0, r - d}, r, 0, mats);
-  p.add({0, 0, 3 * r - 2 * d}, r, 0, mats, {}, {100, 0, 0});
-  DemSystem sys(p, mats, law);
-  const LinearSpring wall = linear_spring(kn, 0, 0);
-  sys.add_plane({{0, 0, 0}, {0, 0, 1}, FixedPlane{}, wall});
-  sys.add_plane({{0, 0, 4 * r - 3 * d}, {0, 0, -1}, FixedPlane{}, wall});
+  RollingPair c;
+  auto& [mats, r, d, lp, law, kn, p, sys] = c;  // the fields by name
   const double e0 = 0.5 * p.inertia[0] * 100 * 100, dt = 1e-7;
   int reversals = 0;
   double w_prev = 100, w = 100;
