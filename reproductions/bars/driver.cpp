@@ -11,6 +11,7 @@
 #include "bar/material.hpp"
 #include "checks/check.hpp"
 #include "common/driver_args.hpp"
+#include "common/report_input.hpp"
 #include "common/perturb.hpp"
 #include "harness/report.hpp"
 #include "scene/scene.hpp"
@@ -38,12 +39,7 @@ std::vector<double> scaled(const std::vector<double>& v, double f) {
 int main(int argc, char** argv) {
   const auto args = repro::parse_driver_args(argc, argv, "bars");
   const auto start = std::chrono::steady_clock::now();
-  harness::ReportInput rep;
-  rep.set = "bars";
-  rep.scale = args.scale;
-  rep.targets_path = args.set_dir() + "/targets.json";
-  rep.out_dir = args.out_dir;
-  rep.repo_root = args.repo_root;
+  harness::ReportInput rep = repro::report_input(args, repro::SmokeTargets::same_as_full);
   auto& m = rep.m;
 
   // (a) Tables 4.1 / 5.2 from their own equations.

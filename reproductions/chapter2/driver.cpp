@@ -16,6 +16,7 @@
 #include "chapter2/compare.hpp"
 #include "chapter2/studies.hpp"
 #include "common/driver_args.hpp"
+#include "common/report_input.hpp"
 #include "common/perturb.hpp"
 #include "harness/report.hpp"
 #include "common/format.hpp"
@@ -45,13 +46,7 @@ int main(int argc, char** argv) {
   const ScaleSettings scale =
       smoke ? ScaleSettings{12, {0.0, 0.03, 0.05, 0.07, 0.11, 0.20}, {2, 8e-3}, {{2, 4}, {4, 8}, {8, 16}}}
             : ScaleSettings{120, {0.0, 0.03, 0.05, 0.07, 0.11, 0.20}, {4, 2e-3}, {{5, 10}, {10, 20}, {20, 40}, {40, 80}}};
-  harness::ReportInput rep;
-  rep.set = "chapter2";
-  rep.scale = args.scale;
-  rep.targets_path = args.set_dir() + "/targets.json";  // one file: smoke meets the same bands
-  rep.out_dir = args.out_dir;
-  rep.repo_root = args.repo_root;
-  std::filesystem::create_directories(rep.out_dir);
+  harness::ReportInput rep = repro::report_input(args, repro::SmokeTargets::same_as_full);  // smoke meets the same bands
   auto& m = rep.m;
   const auto targets = ch2::read_json(args.set_dir() + "/targets.json");
   const std::string scene_path = args.set_dir() + "/scene_" + args.scale + ".json";

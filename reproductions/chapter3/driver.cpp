@@ -15,6 +15,7 @@
 
 #include "chapter3/studies.hpp"
 #include "common/driver_args.hpp"
+#include "common/report_input.hpp"
 #include "common/format.hpp"
 #include "common/perturb.hpp"
 #include "core/errors.hpp"
@@ -46,14 +47,7 @@ int main(int argc, char** argv) {
   std::setvbuf(stdout, nullptr, _IOLBF, 0);  // progress lines reach a log file as they happen
   const auto args = repro::parse_driver_args(argc, argv, "chapter3");
   const auto start = std::chrono::steady_clock::now();
-  const bool smoke = args.scale == "smoke";
-  harness::ReportInput rep;
-  rep.set = "chapter3";
-  rep.scale = args.scale;
-  rep.targets_path = args.set_dir() + (smoke ? "/targets_smoke.json" : "/targets.json");
-  rep.out_dir = args.out_dir;
-  rep.repo_root = args.repo_root;
-  std::filesystem::create_directories(rep.out_dir);
+  harness::ReportInput rep = repro::report_input(args, repro::SmokeTargets::own_file);
   auto& M = rep.m;
   ch3::Context x;
   x.scene_path = args.set_dir() + "/scene_" + args.scale + ".json";

@@ -20,6 +20,7 @@
 #include "chapter4/seeds.hpp"
 #include "chapter4/upscaling.hpp"
 #include "common/driver_args.hpp"
+#include "common/report_input.hpp"
 #include "common/perturb.hpp"
 #include "harness/report.hpp"
 #include "common/format.hpp"
@@ -71,13 +72,7 @@ int main(int argc, char** argv) {
   const auto args = repro::parse_driver_args(argc, argv, "chapter4");
   const auto start = std::chrono::steady_clock::now();
   const bool smoke = args.scale == "smoke";
-  harness::ReportInput rep;
-  rep.set = "chapter4";
-  rep.scale = args.scale;
-  rep.targets_path = args.set_dir() + (smoke ? "/targets_smoke.json" : "/targets.json");
-  rep.out_dir = args.out_dir;
-  rep.repo_root = args.repo_root;
-  std::filesystem::create_directories(rep.out_dir);
+  harness::ReportInput rep = repro::report_input(args, repro::SmokeTargets::own_file);
   auto& m = rep.m;
   const auto targets = ch4::read_json(rep.targets_path);
   const auto reported = ch4::read_json(args.repo_root + "/data/digitized/chapter4/reported.json");

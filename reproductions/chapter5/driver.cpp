@@ -15,6 +15,7 @@
 
 #include "chapter5/studies.hpp"
 #include "common/driver_args.hpp"
+#include "common/report_input.hpp"
 #include "harness/report.hpp"
 
 using namespace kolsky;
@@ -36,13 +37,7 @@ int main(int argc, char** argv) {
   const auto args = repro::parse_driver_args(argc, argv, "chapter5");
   const auto start = std::chrono::steady_clock::now();
   const bool smoke = args.scale == "smoke";
-  harness::ReportInput rep;
-  rep.set = "chapter5";
-  rep.scale = args.scale;
-  rep.targets_path = args.set_dir() + (smoke ? "/targets_smoke.json" : "/targets.json");
-  rep.out_dir = args.out_dir;
-  rep.repo_root = args.repo_root;
-  std::filesystem::create_directories(rep.out_dir);
+  harness::ReportInput rep = repro::report_input(args, repro::SmokeTargets::own_file);
   ch5::Study s;
   s.smoke = smoke;
   s.dir = args.set_dir();
