@@ -25,12 +25,23 @@
 //     particle_steps_per_s (grains counted at every step), breaks, grains at the end and
 //     us_per_replacement and us_per_edit (wall time in apply_breaks per broken grain and per
 //     check that broke some).
+//   BM_DemBusyCore/busy/threads/adapt: BM_DemCompaction beside a process that keeps one core
+//     busy (busy = 1): one thread, two threads at a fixed count, and two threads with
+//     DemOptions::adapt_threads (thread_governor.hpp: it measures and keeps one thread when
+//     that is faster); and two threads, fixed and adaptive, on the idle machine (/0/2/0,
+//     /0/2/1). Counters as BM_DemCompaction's plus probes, switches and
+//     threads_at_end for the adaptive cases. Issue 18's rules: /1/2/1 is never slower than
+//     /1/1/0, and /0/2/1 keeps /0/2/0's rate.
 //   BM_Reference/threads (1, 2): the frozen reference workload (reference_workload.hpp),
 //     registered first; the tracked figure is particle_steps_per_s / ref_pair_updates_per_s
 //     of the same process, per CPU second for 1 thread and per wall second for 2
 //     (reports/benchmarks/README.md, `make bench-check`).
 #include <benchmark/benchmark.h>
 #include <omp.h>
+#include <signal.h>
+#include <sys/prctl.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <chrono>
@@ -38,6 +49,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <limits>
+#include <optional>
 #include <map>
 #include <memory>
 #include <sstream>
@@ -153,10 +165,14 @@ const Specimen& upscaled_specimen(int ten_n) {
   return it->second;
 }
 
-void run(benchmark::State& st, const Specimen& s, int threads, int steps) {
+// adapt: DemOptions::adapt_threads (false: the fixed count `threads`, as every case but
+// BM_DemBusyCore measures).
+void run(benchmark::State& st, const Specimen& s, int threads, int steps, bool adapt = false) {
   const int previous = omp_get_max_threads();
   omp_set_num_threads(threads);
-  Scene sc = make_scene(s);
+  dem::DemOptions opt;
+  opt.adapt_threads = adapt;
+  Scene sc = make_scene(s, opt);
   for (int k = 0; k < 100; ++k) sc.sys->step(sc.dt);  // warm-up, untimed
   // Work per grain, taken here (after the warm-up) so that it does not depend on how many
   // iterations Google Benchmark chooses: Verlet-list pairs (checked every step) and touching
@@ -179,6 +195,11 @@ void run(benchmark::State& st, const Specimen& s, int threads, int steps) {
   st.counters["dt_ns"] = sc.dt * 1e9;
   st.counters["pairs_per_grain"] = pairs_per_grain;
   st.counters["coordination"] = coordination;
+  if (adapt) {
+    st.counters["probes"] = static_cast<double>(sc.sys->thread_governor().probes());
+    st.counters["switches"] = static_cast<double>(sc.sys->thread_governor().switches());
+    st.counters["threads_at_end"] = sc.sys->thread_governor().threads();
+  }
   omp_set_num_threads(previous);
 }
 
@@ -191,6 +212,7 @@ void run_breaking(benchmark::State& st, const Specimen& s, int threads, int step
   bp.sigma_lim0 = sigma;
   bp.coordination_limit = 0;
   dem::DemOptions opt;  // growing: the step of the smallest possible daughter
+  opt.adapt_threads = false;
   if (sigma < 1e12) opt.smallest_radius_to_come = dem::smallest_radius_to_come(bp, s.particles);
   Scene sc = make_scene(s, opt);
   for (int k = 0; k < 100; ++k) sc.sys->step(sc.dt);  // warm-up, untimed, before any check
@@ -236,6 +258,38 @@ void BM_DemCompaction(benchmark::State& st) {
   st.SetLabel(benchmark_specimen().label);
 }
 
+// A process that keeps one core busy while it lives (killed at the end of the case, or with
+// bench_dem itself through PR_SET_PDEATHSIG).
+class BusyCore {
+ public:
+  BusyCore() : pid_(fork()) {
+    if (pid_ != 0) return;
+    prctl(PR_SET_PDEATHSIG, SIGKILL);
+    for (;;) asm volatile("");
+  }
+  ~BusyCore() {
+    if (pid_ <= 0) return;
+    kill(pid_, SIGKILL);
+    waitpid(pid_, nullptr, 0);
+  }
+  BusyCore(const BusyCore&) = delete;
+  BusyCore& operator=(const BusyCore&) = delete;
+
+ private:
+  pid_t pid_;
+};
+
+// BM_DemCompaction with or without a busy core beside it: /busy/threads/adapt, adapt =
+// DemOptions::adapt_threads. The rules (issue 18): beside a busy core two threads with the
+// governor are never slower than one thread; on an idle machine they keep the speed of two.
+void BM_DemBusyCore(benchmark::State& st) {
+  const Specimen& s = benchmark_specimen();
+  std::optional<BusyCore> busy;
+  if (st.range(0) != 0) busy.emplace();
+  run(st, s, static_cast<int>(st.range(1)), 200, st.range(2) != 0);
+  st.SetLabel(s.label + (busy ? " beside a busy core" : " idle"));
+}
+
 void BM_DemUpscale(benchmark::State& st) {
   run(st, upscaled_specimen(static_cast<int>(st.range(0))), 1, 100);
 }
@@ -248,5 +302,7 @@ void BM_DemUpscale(benchmark::State& st) {
 BENCHMARK(BM_DemCompaction)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_DemBreakageIdle)->Args({1, 1})->Args({1, 10})->Args({1, 50})->Args({2, 50})->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_DemBreakageGrowing)->Arg(1)->Arg(2)->Iterations(1)->Unit(benchmark::kMillisecond)->UseRealTime();
+// Five iterations (1,000 timed steps): the governor's probes are part of what is measured.
+BENCHMARK(BM_DemBusyCore)->Args({0, 2, 0})->Args({0, 2, 1})->Args({1, 1, 0})->Args({1, 2, 0})->Args({1, 2, 1})->Iterations(5)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_DemUpscale)->Arg(10)->Arg(15)->Arg(20)->Arg(25)->Arg(30)->Arg(40)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK_MAIN();

@@ -41,12 +41,15 @@ inline DemOptions busy_options() {
   DemOptions opt;
   opt.rolling.factor_per_reference_step = 0.99999975;
   opt.skin_over_min_radius = 0.1;  // small skin: forces several rebuilds in a short run
+  // The caller's thread count at every step, so a run said to use two threads does (the
+  // thread governor would move a loaded machine's run to one: test_thread_governor.cpp).
+  opt.adapt_threads = false;
   return opt;
 }
 
-inline DemSystem busy_system(const BusyScene& s) {
+inline DemSystem busy_system(const BusyScene& s, const DemOptions& opt = busy_options()) {
   const HertzMindlinParams hp{0.5, 0.5};
-  DemSystem sys(busy_grains(s), kBusySand, HertzMindlin(kBusySand, hp), busy_options());
+  DemSystem sys(busy_grains(s), kBusySand, HertzMindlin(kBusySand, hp), opt);
   const WallLaw hw = HertzMindlinWall(kBusySand, kBusySand[0], hp);
   sys.add_plane({{0, 0, 0}, {0, 0, 1}, FixedPlane{}, hw});
   sys.add_plane({{0, 0, s.top()}, {0, 0, -1}, PrescribedPlane{{{0.0}, {10.0}}}, hw});

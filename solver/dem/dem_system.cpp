@@ -3,10 +3,13 @@
 #include "dem/dem_system.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <numbers>
 #include <limits>
 #include <sstream>
+
+#include <omp.h>
 
 #include "core/errors.hpp"
 #include "core/stability_check.hpp"
@@ -167,23 +170,48 @@ void DemSystem::step(double dt) {
   finish_step();
 }
 
+namespace {
+using Clock = std::chrono::steady_clock;
+double seconds_since(Clock::time_point t0) {
+  return std::chrono::duration<double>(Clock::now() - t0).count();
+}
+}  // namespace
+
+int DemSystem::threads_for_step() {
+  const int cap = omp_get_max_threads();
+  if (!opt_.adapt_threads || cap <= 1) return cap;
+  if (governor_.max_threads() != cap) governor_ = ThreadGovernor(cap, opt_.governor);
+  return governor_.threads();
+}
+
 void DemSystem::begin_step(double dt) {
   if (particles_changed_) refresh_after_edit();
   check_dt(dt);
   if (pending_dt_ > 0) finish_step();
+  step_threads_ = threads_for_step();
+  const ScopedThreads scope(step_threads_);
+  const auto t0 = Clock::now();
   if (!forces_valid_) compute_forces(0.0);
   kick(0.5 * dt);
   drift(dt);
   time_ += dt;
   pending_dt_ = dt;
+  step_seconds_ = seconds_since(t0);
 }
 
 void DemSystem::finish_step() {
+  const ScopedThreads scope(step_threads_);
+  const auto t0 = Clock::now();
   const double dt = pending_dt_;
   compute_forces(dt);
   kick(0.5 * dt);
   retard(dt);
   pending_dt_ = 0;
+  // Only the DEM's own work is timed: what the caller does between steps (bars, output)
+  // does not depend on this choice and would only add noise to the comparison.
+  if (step_threads_ > 0 && opt_.adapt_threads && governor_.max_threads() > 1)
+    governor_.record(step_seconds_ + seconds_since(t0));
+  step_threads_ = 0;
 }
 
 void DemSystem::kick(double h) {

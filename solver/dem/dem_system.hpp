@@ -13,6 +13,7 @@
 #include "dem/contact_law.hpp"
 #include "dem/neighbour_list.hpp"
 #include "dem/particles.hpp"
+#include "dem/thread_governor.hpp"
 #include "dem/walls.hpp"
 
 namespace kolsky::dem {
@@ -54,6 +55,14 @@ struct DemOptions {
   /// covers a grain of this radius of every material from the start, so the step fixed when
   /// the run is planned stays stable as grains break (docs/breakage.md). 0: the grains present.
   double smallest_radius_to_come = 0.0;
+  /// step() (begin_step, finish_step) chooses between one thread and the caller's OpenMP
+  /// count from the step rate it measures (thread_governor.hpp): two threads beside a busy
+  /// core are slower than one under any wait policy. Results do not depend on it (they are
+  /// bitwise the same for any thread count); false: always the caller's count (benchmarks
+  /// that measure a fixed count).
+  bool adapt_threads = true;
+  /// Window, probe interval and margin of that choice (thread_governor.hpp).
+  ThreadGovernorOptions governor;
 };
 
 /// The fraction of stable_dt() at which kolsky's own DEM loops step (packing, pre-stress,
@@ -202,6 +211,8 @@ class DemSystem {
   std::size_t n_contacts() const;       ///< touching grain pairs
   std::size_t n_wall_contacts() const;  ///< touching grain-wall contacts
   std::size_t n_rebuilds() const { return n_rebuilds_; }
+  /// The thread-count choice of step() (DemOptions::adapt_threads): probes and switches.
+  const ThreadGovernor& thread_governor() const { return governor_; }
   double skin() const { return skin_; }
   bool finite() const;
 
@@ -332,6 +343,12 @@ class DemSystem {
   double skin_ = 0, time_ = 0, pending_dt_ = 0, stable_dt_ = 0;
   bool list_valid_ = false, forces_valid_ = false, particles_changed_ = false;
   std::size_t n_rebuilds_ = 0;
+  // The thread count of step(): chosen from the measured wall time of begin_step + finish_step
+  // (opt_.adapt_threads); threads_for_step() rebuilds it when the caller's count changes.
+  ThreadGovernor governor_{1};
+  double step_seconds_ = 0;
+  int step_threads_ = 0;  // the count begin_step chose for this step (0: the caller's)
+  int threads_for_step();
   double max_disp2_ = 0;
 
   std::vector<PlaneState> planes_;
