@@ -100,11 +100,7 @@ TEST(DemPacking, DeterministicForASeed) {
 // Jamming stage (jam = true): the same porosity, count and curve guarantees (the radii are the
 // sampled ones), plus a frictional contact network. ~1,500 grains; overlap tolerance 5e-3 r_mean
 // (0.5 % of a radius, 1 um here) so the quenched settling stops within the test's budget.
-TEST(DemPacking, JammedPackingHasAFrictionalContactNetwork) {
-  PackingParams in = small_song(0.006, 0.004, 7);
-  in.jam = true;
-  in.overlap_tolerance = 5e-3;
-  in.max_settle_stages = 300;
+void expect_frictional_network(const PackingParams& in) {
   const PackingResult r = generate_packing(in);
   const double volume = psd::cylinder_volume(in.diameter, in.length);
   const double d_max = in.curve.d_max();
@@ -128,6 +124,35 @@ TEST(DemPacking, JammedPackingHasAFrictionalContactNetwork) {
   // Ch. 4 comparison (Hertz with overlaps < 5e-3 r gives at most ~1e5 Pa here).
   EXPECT_GT(r.mean_stress_hertz, 0.0);
   EXPECT_LT(r.mean_stress_hertz, 2e5);
+  // With density scaling too, the result carries the grains' own masses and inertias, not
+  // the scaled ones.
+  for (std::size_t i = 0; i < r.count; ++i) {
+    const double rad = r.particles.radius[i];
+    const double m = 4.0 / 3.0 * std::numbers::pi * rad * rad * rad * in.material.density;
+    ASSERT_DOUBLE_EQ(r.particles.mass[i], m) << i;
+    ASSERT_DOUBLE_EQ(r.particles.inertia[i], 0.4 * m * rad * rad) << i;
+  }
+}
+
+PackingParams small_jammed_song() {
+  PackingParams in = small_song(0.006, 0.004, 7);
+  in.jam = true;
+  in.overlap_tolerance = 5e-3;
+  in.max_settle_stages = 300;
+  return in;
+}
+
+TEST(DemPacking, JammedPackingHasAFrictionalContactNetwork) {
+  expect_frictional_network(small_jammed_song());
+}
+
+// Density scaling (docs/dem.md, "Packing"): the same acceptance rules, with the scene's
+// setting of kJamScaledStepsPerStage steps per stage.
+TEST(DemPacking, DensityScaledJammedPackingHasAFrictionalContactNetwork) {
+  PackingParams in = small_jammed_song();
+  in.jam_mass_scaling = true;
+  in.jam_steps_per_stage = kJamScaledStepsPerStage;
+  expect_frictional_network(in);
 }
 
 TEST(DemPacking, JammedPackingIsDeterministic) {

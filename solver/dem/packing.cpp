@@ -31,16 +31,17 @@ void check(bool ok, const std::string& field, const std::string& rule) {
   if (!ok) throw InputError("", "dem.packing." + field, rule);
 }
 
-void set_radius(Particles& p, std::size_t i, double r, double rho) {
+// mass_floor > 0: density scaling (jam_stage): no grain lighter than mass_floor.
+void set_radius(Particles& p, std::size_t i, double r, double rho, double mass_floor = 0) {
   p.radius[i] = r;
-  p.mass[i] = 4.0 / 3.0 * kPi * r * r * r * rho;
+  p.mass[i] = std::max(4.0 / 3.0 * kPi * r * r * r * rho, mass_floor);
   p.inertia[i] = 0.4 * p.mass[i] * r * r;
 }
 
 void set_scale(Particles& q, const std::vector<double>& target, double scale, double rho,
-               double quench) {
+               double quench, double mass_floor = 0) {
   for (std::size_t i = 0; i < q.size(); ++i) {
-    set_radius(q, i, scale * target[i], rho);
+    set_radius(q, i, scale * target[i], rho, mass_floor);
     q.v[i] = quench * q.v[i];
     q.omega[i] = quench * q.omega[i];
   }
@@ -102,6 +103,16 @@ void jam_stage(const PackingParams& in, Particles p, const std::vector<double>& 
   auto law_of = [&](double friction) {
     return linear_spring(k, 2.0 / 7.0 * k, friction, in.damping_ratio, in.damping_ratio);
   };
+  // Density scaling: the packing's end state is a static equilibrium, which does not depend on
+  // the masses, while the step does (sqrt(m_min / k)); the mean grain's mass as a floor raises
+  // the step by sqrt(m_mean / m_min), ~5x for the Song curve (docs/dem.md, "Packing").
+  double mass_floor = 0;
+  if (in.jam_mass_scaling) {
+    for (double r : target) mass_floor += 4.0 / 3.0 * kPi * r * r * r * in.material.density;
+    mass_floor /= n;
+  }
+  for (std::size_t i = 0; i < p.size(); ++i)
+    set_radius(p, i, p.radius[i], in.material.density, mass_floor * s0 * s0 * s0);
   std::optional<DemSystem> sys;
   sys.emplace(std::move(p), materials, law_of(in.jam_friction), DemOptions{});
   // Frictionless walls, so the wall zone is not held looser than the core by wall friction.
@@ -109,7 +120,8 @@ void jam_stage(const PackingParams& in, Particles p, const std::vector<double>& 
   const double dt = kDemStepFraction * sys->stable_dt();
   const int sps = in.jam_steps_per_stage;
   auto stage = [&](double scale, double quench) {
-    set_scale(sys->mutable_particles(), target, scale, in.material.density, quench);
+    set_scale(sys->mutable_particles(), target, scale, in.material.density, quench,
+              mass_floor * scale * scale * scale);
     for (int j = 0; j < sps; ++j) sys->step(dt);
     res.steps += sps;
     ++res.stages;
@@ -145,6 +157,8 @@ void jam_stage(const PackingParams& in, Particles p, const std::vector<double>& 
   sys->compute_forces();
   res.mean_stress = wall_mean_stress(*sys, R, L);
   res.particles = sys->particles();
+  for (std::size_t i = 0; i < res.particles.size(); ++i)  // the grains' own masses again
+    set_radius(res.particles, i, res.particles.radius[i], in.material.density);
   res.settled = overlap < in.overlap_tolerance;
 }
 

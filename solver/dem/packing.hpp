@@ -43,6 +43,10 @@ struct PackingProgress {
   double kinetic_to_elastic = NAN;  ///< kinetic over elastic energy of the assembly
 };
 
+/// Steps per jamming stage with density scaling: the growth then stays fast against the
+/// grains' motion, so they lock into a frictional network (docs/dem.md, "Packing").
+inline constexpr int kJamScaledStepsPerStage = 60;
+
 struct PackingParams {
   psd::GrainSizeCurve curve;       ///< grain sizes of the specimen (already upscaled), m
   double porosity = 0.44;          ///< target n = 1 - V_solid / V, in (0, 1)
@@ -67,8 +71,13 @@ struct PackingParams {
   bool jam = false;
   double jam_friction = 0.3;          ///< grain-grain friction while packing (mu_pack), -
   double jam_overlap = 1e-4;          ///< design overlap / mean radius for the stiffness, -
-  int jam_steps_per_stage = 200;
+  int jam_steps_per_stage = 200;      ///< kJamScaledStepsPerStage with jam_mass_scaling
   double jam_velocity_quench = 0.5;   ///< v, omega *= this at every growth stage, -
+  /// Density scaling while jamming: no grain lighter than the mean grain (the end state is
+  /// static; the step grows by sqrt(m_mean / m_min)); the result has the grains' own masses.
+  /// Off by default, so existing scenes keep their packings (scene key
+  /// specimen.packing_density_scaling; docs/dem.md, "Packing").
+  bool jam_mass_scaling = false;
   // Pre-stress (prestress.hpp; docs/dem.md "Pre-stress"), after the settling; off at 0: all
   // radii scaled by one servo-controlled factor until the wall mean stress under damped
   // Hertz-Mindlin grain contacts (rigid frictionless Hertz walls) is initial_stress.

@@ -124,6 +124,7 @@ std::string packing_cache_key(const PackingParams& q) {
   h.add(q.overlap_tolerance), h.add(q.max_settle_stages), h.add(q.max_rsa_attempts);
   h.add(q.jam), h.add(q.jam_friction), h.add(q.jam_overlap), h.add(q.jam_steps_per_stage);
   h.add(q.jam_velocity_quench);
+  if (q.jam && q.jam_mass_scaling) h.add(q.jam_mass_scaling);  // earlier keys unchanged otherwise
   if (q.initial_stress > 0) {  // unstressed packings keep the keys they had before
     h.add(q.initial_stress), h.add(q.prestress_friction), h.add(q.prestress_restitution);
     h.add(q.prestress_tolerance), h.add(q.prestress_servo_interval);

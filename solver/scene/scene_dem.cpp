@@ -65,6 +65,11 @@ dem::DemSpecimenParams read_dem_specimen(JsonReader& r, const std::string& base_
   d.packing.seed = static_cast<std::uint64_t>(r.integer("specimen.seed"));
   check_packable(r, d.packing);
   d.packing.jam = r.text("specimen.packing") == "jammed";
+  // Read for every dem scene (a loose packing has no jamming stage to scale).
+  if (r.boolean("specimen.packing_density_scaling") && d.packing.jam) {
+    d.packing.jam_mass_scaling = true;
+    d.packing.jam_steps_per_stage = dem::kJamScaledStepsPerStage;
+  }
   if (std::string cache = r.text("specimen.packing_cache"); !cache.empty()) {
     fs::path cp(cache);  // relative to the scene file's folder, like the CSV paths
     if (cp.is_relative()) cp = fs::path(base_dir.empty() ? "." : base_dir) / cp;

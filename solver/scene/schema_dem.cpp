@@ -44,6 +44,12 @@ void add_dem_rows(TableBuilder& s) {
         "Packing procedure: loose (frictionless growth) or jammed (frictional contact network "
         "at the target porosity; docs/dem.md, Packing)",
         dem, {"loose", "jammed"});
+  s.add(VT::boolean, "specimen.packing_density_scaling", pack.jam_mass_scaling, "-", kNoRange,
+        "Jammed packing with density scaling: no grain lighter than the mean grain while "
+        "jamming, " + std::to_string(dem::kJamScaledStepsPerStage) +
+            " steps per stage; about 3-4x faster, same porosity, coordination and rattlers "
+            "(docs/dem.md, Packing); a loose packing ignores it",
+        dem);
   s.add(VT::string, "specimen.packing_cache", std::string(), "-", kNoRange,
         "Folder (relative to the scene file) where packings are stored by a hash of all packing "
         "parameters and reused; empty = no cache (docs/dem.md, Packing cache)",
