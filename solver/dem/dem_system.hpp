@@ -320,9 +320,9 @@ class DemSystem {
   template <class Law> void plane_forces(const Law& law, int k, double dt);
   template <class Law> void tube_forces(const Law& law, int k, double dt);
   void gather();
-  void kick(double half_dt);
-  void drift(double dt);
-  void retard(double dt);
+  void kick_drift(double half_dt, double dt);   // begin_step: half kick, then drift
+  void kick_retard(double half_dt, double dt);  // finish_step: half kick, then retardation
+  void kick_tubes(double half_dt);              // the compliant tubes' half kick
   bool needs_rebuild() const;
   void rebuild();
   void build_wall_candidates();
