@@ -67,7 +67,11 @@ int main(int argc, char** argv) {
   }
   if (cut > 0) s.top = cut;
   omp_set_num_threads(threads);
-  bench::Scene sc = bench::make_scene(s);
+  // The thread count asked for at every step: the peer figures compare fixed counts (the
+  // thread governor, docs/dem.md "Threads beside a busy core", has its own benchmark case).
+  dem::DemOptions opt;
+  opt.adapt_threads = false;
+  bench::Scene sc = bench::make_scene(s, opt);
   std::printf("# %zu grains, lid at %.6g m, scene dt %.6e s, used dt %.6e s, %d thread(s)\n",
               s.particles.size(), s.top, sc.dt, dt > 0 ? dt : sc.dt, threads);
   if (dt > 0) sc.dt = dt;

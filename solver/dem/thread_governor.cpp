@@ -32,13 +32,22 @@ void ThreadGovernor::finish_window() {
   window_s_ = 0;
   if (!measuring_other_) {
     chosen_per_step_ = per_step;
-    measuring_other_ = since_probe_ >= interval_;
+    measuring_other_ = confirming_ || since_probe_ >= interval_;
     return;
   }
   measuring_other_ = false;
   ++probes_;
   since_probe_ = 0;
-  if (per_step < (1 - opt_.margin) * chosen_per_step_) {
+  const bool won = per_step < (1 - opt_.margin) * chosen_per_step_;
+  // A probe that wins is repeated after one more window at the chosen count, and the count
+  // changes only when it wins again: on a shared host one window can be slowed by 20 % or more
+  // by others' work, which a single comparison would take for a change of load.
+  if (won && !confirming_) {
+    confirming_ = true;
+    return;
+  }
+  confirming_ = false;
+  if (won) {
     chosen_ = other();  // other() of the old choice, before chosen_ changes
     chosen_per_step_ = per_step;
     ++switches_;

@@ -7,7 +7,8 @@
 // while on an idle machine the default spin is the fastest policy (14.0 M against 10.6-12.4 M).
 // A wait policy cannot have both, and libgomp reads it once, when it is loaded. So the loop
 // keeps the default and measures instead: it runs a window of steps with the other thread
-// count now and then and keeps whichever was faster. DemSystem's results are bitwise the same
+// count now and then and keeps whichever was faster (twice in a row, so one window slowed by
+// the host's noise does not decide). DemSystem's results are bitwise the same
 // for any thread count (docs/dem.md, "Parallel determinism"), so the choice changes the speed
 // only, never a result.
 //
@@ -46,6 +47,7 @@ class ThreadGovernor {
   int max_threads_ = 1;
   int chosen_ = 1;
   bool measuring_other_ = false;
+  bool confirming_ = false;       // the last probe won; the next one decides
   long since_probe_ = 0;          // steps at the chosen count since the last probe
   long interval_ = 0;             // steps between probes
   int in_window_ = 0;             // steps of the current window so far
