@@ -89,6 +89,20 @@ TEST(ThreadGovernor, OneSlowWindowDoesNotSwitch) {
   EXPECT_EQ(g.switches(), 0);
 }
 
+// A governor started at one thread (the process's last choice, as DemSystem passes it) on an
+// idle machine takes two threads back within four windows.
+TEST(ThreadGovernor, StartsFromTheGivenCount) {
+  ThreadGovernorOptions o = kSmall;
+  o.start_threads = 1;
+  ThreadGovernor g(2, o);
+  EXPECT_EQ(g.threads(), 1);
+  run_steps(g, 4 * kSmall.window, [](int t) { return t == 2 ? 0.55 : 1.0; });
+  EXPECT_EQ(g.threads(), 2);
+  EXPECT_EQ(g.switches(), 1);
+  o.start_threads = 3;  // out of range: the largest count
+  EXPECT_EQ(ThreadGovernor(2, o).threads(), 2);
+}
+
 // A difference inside the margin (3 % < 5 %) is noise: no switch, in either direction.
 TEST(ThreadGovernor, DifferenceInsideTheMarginDoesNotSwitch) {
   ThreadGovernor g(2, kSmall);

@@ -3,6 +3,7 @@
 #include "dem/dem_system.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <numbers>
@@ -175,12 +176,21 @@ using Clock = std::chrono::steady_clock;
 double seconds_since(Clock::time_point t0) {
   return std::chrono::duration<double>(Clock::now() - t0).count();
 }
+
+// The last count chosen by any DemSystem's governor in this process (0: none yet), the start of
+// the next governor (ThreadGovernorOptions::start_threads). Only the speed depends on it.
+std::atomic<int> g_last_step_threads{0};
+
 }  // namespace
 
 int DemSystem::threads_for_step() {
   const int cap = omp_get_max_threads();
   if (!opt_.adapt_threads || cap <= 1) return cap;
-  if (governor_.max_threads() != cap) governor_ = ThreadGovernor(cap, opt_.governor);
+  if (governor_.max_threads() != cap) {
+    ThreadGovernorOptions o = opt_.governor;
+    if (o.start_threads == 0) o.start_threads = g_last_step_threads.load(std::memory_order_relaxed);
+    governor_ = ThreadGovernor(cap, o);
+  }
   return governor_.threads();
 }
 
@@ -207,8 +217,12 @@ void DemSystem::finish_step() {
   pending_dt_ = 0;
   // Only the DEM's own work is timed: what the caller does between steps (bars, output)
   // does not depend on this choice and would only add noise to the comparison.
-  if (step_threads_ > 0 && opt_.adapt_threads && governor_.max_threads() > 1)
+  if (step_threads_ > 0 && opt_.adapt_threads && governor_.max_threads() > 1) {
+    const long switches = governor_.switches();
     governor_.record(step_seconds_ + seconds_since(t0));
+    if (governor_.switches() != switches)
+      g_last_step_threads.store(governor_.threads(), std::memory_order_relaxed);
+  }
   step_threads_ = 0;
 }
 

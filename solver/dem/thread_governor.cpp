@@ -14,8 +14,9 @@ ThreadGovernor::ThreadGovernor(int max_threads, ThreadGovernorOptions options)
   opt_.window = std::max(1, opt_.window);
   opt_.first_probe = std::max(1L, opt_.first_probe);
   opt_.max_probe_interval = std::max(opt_.first_probe, opt_.max_probe_interval);
-  // interval_ = 0: the first probe follows the first window, so a loop started beside a busy
-  // core leaves its slow count within two windows.
+  if (opt_.start_threads >= 1 && opt_.start_threads <= max_threads_) chosen_ = opt_.start_threads;
+  // interval_ = 0: the first probe follows the first window, so a loop started at the wrong
+  // count leaves it within four windows (two winning probes).
 }
 
 void ThreadGovernor::record(double seconds) {

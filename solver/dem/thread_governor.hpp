@@ -23,11 +23,16 @@ struct ThreadGovernorOptions {
   long first_probe = 1024;          ///< steps at the chosen count before the next probe, > 0
   long max_probe_interval = 16384;  ///< the interval doubles after each probe that loses
   double margin = 0.05;             ///< the other count must be this much faster to be chosen
+  /// The count to start from (1 ... max_threads; 0 or out of range: max_threads). DemSystem
+  /// passes the last choice of any governor in the process: the load on the machine outlives
+  /// one system (a packing's growth, settling and pre-stress, then the test, each have one).
+  int start_threads = 0;
 };
 
 class ThreadGovernor {
  public:
-  /// Chooses between 1 and `max_threads` threads (max_threads <= 1: always 1, no probing).
+  /// Chooses between 1 and `max_threads` threads (max_threads <= 1: always 1, no probing),
+  /// starting from options.start_threads.
   explicit ThreadGovernor(int max_threads, ThreadGovernorOptions options = {});
 
   /// Threads for the next step.
