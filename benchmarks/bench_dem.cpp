@@ -25,8 +25,8 @@
 //     particle_steps_per_s (grains counted at every step), breaks, grains at the end and
 //     us_per_replacement and us_per_edit (wall time in apply_breaks per broken grain and per
 //     check that broke some).
-//   BM_DemBusyCore/busy/threads/adapt: BM_DemCompaction (after 400 warm-up steps) beside a process that keeps one core
-//     busy (busy = 1): one thread, two threads at a fixed count, and two threads with
+//   BM_DemBusyCore/busy/threads/adapt: BM_DemCompaction, after 400 untimed steps, beside a
+//     process that keeps one core busy (busy = 1): one thread, two threads at a fixed count, and two threads with
 //     DemOptions::adapt_threads (thread_governor.hpp: it measures and keeps one thread when
 //     that is faster); and two threads, fixed and adaptive, on the idle machine (/0/2/0,
 //     /0/2/1). Counters as BM_DemCompaction's plus probes, switches and
@@ -306,7 +306,7 @@ void BM_DemUpscale(benchmark::State& st) {
 BENCHMARK(BM_DemCompaction)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_DemBreakageIdle)->Args({1, 1})->Args({1, 10})->Args({1, 50})->Args({2, 50})->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_DemBreakageGrowing)->Arg(1)->Arg(2)->Iterations(1)->Unit(benchmark::kMillisecond)->UseRealTime();
-// Five iterations (1,000 timed steps): the governor's probes are part of what is measured.
+// Five iterations (1,000 timed steps) after the governor's decision (BM_DemBusyCore).
 BENCHMARK(BM_DemBusyCore)->Args({0, 2, 0})->Args({0, 2, 1})->Args({1, 1, 0})->Args({1, 2, 0})->Args({1, 2, 1})->Iterations(5)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_DemUpscale)->Arg(10)->Arg(15)->Arg(20)->Arg(25)->Arg(30)->Arg(40)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK_MAIN();

@@ -130,7 +130,7 @@ double DemSystem::compute_stable_dt() const {
   }
   if (const double r = opt_.smallest_radius_to_come; r > 0)
     for (const Material& m : materials_) {
-      m_min = std::min(m_min, 4.0 / 3.0 * std::numbers::pi * r * r * r * m.density);
+      m_min = std::min(m_min, sphere_mass(r, m.density));
       rayleigh = std::min(rayleigh, rayleigh_time_step(r, m));
     }
   // Every law, of the grains and of each wall, states its own limit through the same member,

@@ -323,6 +323,7 @@ class DemSystem {
   void kick_drift(double half_dt, double dt);   // begin_step: half kick, then drift
   void kick_retard(double half_dt, double dt);  // finish_step: half kick, then retardation
   void kick_tubes(double half_dt);              // the compliant tubes' half kick
+  int threads_for_step();                       // the governor's count (or the caller's)
   bool needs_rebuild() const;
   void rebuild();
   void build_wall_candidates();
@@ -348,7 +349,6 @@ class DemSystem {
   ThreadGovernor governor_{1};
   double step_seconds_ = 0;
   int step_threads_ = 0;  // the count begin_step chose for this step (0: the caller's)
-  int threads_for_step();
   double max_disp2_ = 0;
 
   std::vector<PlaneState> planes_;

@@ -34,7 +34,7 @@ void check(bool ok, const std::string& field, const std::string& rule) {
 // mass_floor > 0: density scaling (jam_stage): no grain lighter than mass_floor.
 void set_radius(Particles& p, std::size_t i, double r, double rho, double mass_floor = 0) {
   p.radius[i] = r;
-  p.mass[i] = std::max(4.0 / 3.0 * kPi * r * r * r * rho, mass_floor);
+  p.mass[i] = std::max(sphere_mass(r, rho), mass_floor);
   p.inertia[i] = 0.4 * p.mass[i] * r * r;
 }
 
@@ -108,7 +108,7 @@ void jam_stage(const PackingParams& in, Particles p, const std::vector<double>& 
   // the step by sqrt(m_mean / m_min), ~5x for the Song curve (docs/dem.md, "Packing").
   double mass_floor = 0;
   if (in.jam_mass_scaling) {
-    for (double r : target) mass_floor += 4.0 / 3.0 * kPi * r * r * r * in.material.density;
+    for (double r : target) mass_floor += sphere_mass(r, in.material.density);
     mass_floor /= n;
   }
   for (std::size_t i = 0; i < p.size(); ++i)

@@ -2,7 +2,6 @@
 #include "dem/particles.hpp"
 
 #include <cmath>
-#include <numbers>
 #include <string>
 
 #include "core/errors.hpp"
@@ -25,7 +24,7 @@ void validate(const std::vector<Material>& materials) {
 
 void Particles::add(const Vec3& position, double r, int mat, const std::vector<Material>& materials,
                     const Vec3& velocity, const Vec3& angular_velocity) {
-  const double m = 4.0 / 3.0 * std::numbers::pi * r * r * r * materials.at(mat).density;
+  const double m = sphere_mass(r, materials.at(mat).density);
   x.push_back(position);
   v.push_back(velocity);
   omega.push_back(angular_velocity);

@@ -4,6 +4,7 @@
 // m = 4/3 pi r^3 rho, I = 2/5 m r^2. SI units throughout (m, kg, s, rad).
 #pragma once
 #include <cstddef>
+#include <numbers>
 #include <vector>
 
 #include "dem/vec3.hpp"
@@ -21,6 +22,11 @@ struct Material {
 
 /// Throws kolsky::InputError("", "dem.materials[i]...", rule) on a non-physical material.
 void validate(const std::vector<Material>& materials);
+
+/// Mass of a solid sphere of radius r (m) and density rho (kg/m^3), kg.
+inline double sphere_mass(double r, double rho) {
+  return 4.0 / 3.0 * std::numbers::pi * r * r * r * rho;
+}
 
 /// The particle state. Forces and torques are those of the last force evaluation.
 struct Particles {

@@ -23,7 +23,7 @@ void scale_grains(Particles& q, const std::vector<double>& r0, double s, double 
   for (std::size_t i = 0; i < q.size(); ++i) {
     const double r = s * r0[i];
     q.radius[i] = r;
-    q.mass[i] = 4.0 / 3.0 * std::numbers::pi * r * r * r * rho;
+    q.mass[i] = sphere_mass(r, rho);
     q.inertia[i] = 0.4 * q.mass[i] * r * r;
   }
 }

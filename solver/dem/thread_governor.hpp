@@ -61,12 +61,9 @@ class ThreadGovernor {
   long switches_ = 0, probes_ = 0;
 };
 
-}  // namespace kolsky::dem
-
-namespace kolsky::dem {
-
 /// OpenMP's thread count for the parallel regions opened in its scope (threads <= 0: the
-/// caller's, unchanged); the caller's count is restored at its end, so code outside the DEM step (FE bars, I/O) is not affected.
+/// caller's, unchanged); the caller's count is restored at its end, so code outside the DEM
+/// step (FE bars, I/O) is not affected.
 class ScopedThreads {
  public:
   explicit ScopedThreads(int threads);
