@@ -323,7 +323,7 @@ TEST_F(FeDemScene, MeshedBarsMeshedTubeAndDemBuildTheCoupledAssembly) {
 
 TEST_F(FeDemScene, UnsupportedCombinationsAreRefusedNamingTheKey) {
   const std::vector<std::pair<nlohmann::json, std::string>> cases = {
-      {{{"bars", {{"kind", "characteristic"}, {"mesh_radial", nullptr}, {"element_length", nullptr}}}}, "specimen.tube"},
+      {{{"bars", {{"kind", "sphere_chain"}, {"mesh_radial", nullptr}, {"element_length", nullptr}}}}, "specimen.tube"},
       {{{"specimen", {{"tube", "spring"}}}}, "specimen.tube"},
       {{{"specimen", {{"tube", "none"}}}}, "specimen.tube"},
       {{{"specimen", {{"hold_until_loaded", true}}}}, "specimen.hold_until_loaded"},

@@ -26,20 +26,6 @@ dem::DemSpecimen checked(dem::DemSpecimen s) {
   return s;
 }
 
-// sqrt(m / (N k)) of the wall law's stiffest spring, as the law states it for mass m / N.
-double node_limit(const dem::WallLaw& law, double mass_per_grain) {
-  return std::visit(
-      [&](const auto& l) -> double {
-        if constexpr (std::is_same_v<std::decay_t<decltype(l)>, dem::LinearSpring>) {
-          return l.stable_dt(mass_per_grain);
-        } else {
-          throw InputError("", "specimen.wall_normal_stiffness",
-                           "the FE-DEM coupling needs a linear grain-wall law");
-        }
-      },
-      law);
-}
-
 }  // namespace
 
 double OffAxisTally::face_fraction() const {
@@ -61,7 +47,6 @@ FeDemShpb::FeDemShpb(const FeDemParams& p, dem::DemSpecimen specimen)
       std::abs(std::sqrt(dem_.area() / std::numbers::pi) - p.fe.specimen_radius) > 1e-12 * p.fe.specimen_radius)
     throw InputError("", "specimen.length", "the grains' cylinder and the FE gap must agree");
   const double r_min = *std::min_element(sys.particles().radius.begin(), sys.particles().radius.end());
-  const double grain_area = std::numbers::pi * r_min * r_min;
   node_dt_ = std::numeric_limits<double>::infinity();
   const fe::Nodes& nd = fe_.body().nodes();
   for (int s = 0; s < 3; ++s) {
@@ -69,13 +54,7 @@ FeDemShpb::FeDemShpb(const FeDemParams& p, dem::DemSpecimen specimen)
     if (!fe_.has_surface(surf)) continue;
     const dem::WallLaw& law = s < 2 ? sys.plane(s == 0 ? dem_.front_plane() : dem_.back_plane()).law
                                     : sys.cylinder(0).law;
-    const std::vector<int>& nodes = fe_.surface(surf);
-    for (std::size_t a = 0; a < nodes.size(); ++a) {
-      // Grains touching a wall in one layer have centres >= 2 r_min apart: at most
-      // A / (2 sqrt(3) r_min^2) < A / (pi r_min^2) of them on a node's tributary area A.
-      const double n_grains = std::max(1.0, fe_.surface_area(surf)[a] / grain_area);
-      node_dt_ = std::min(node_dt_, node_limit(law, nd.mass[static_cast<std::size_t>(nodes[a])] / n_grains));
-    }
+    node_dt_ = std::min(node_dt_, surface_node_dt(law, nd, fe_.surface(surf), fe_.surface_area(surf), r_min));
   }
   for (int s = 0; s < 3; ++s) loads_[s] = RingLoads(fe_.surface(static_cast<fe::Surface>(s)).size());
 }

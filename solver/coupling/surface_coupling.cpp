@@ -1,6 +1,12 @@
 #include "coupling/surface_coupling.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
+#include <numbers>
+#include <type_traits>
+
+#include "core/errors.hpp"
 
 namespace kolsky::coupling {
 
@@ -49,6 +55,28 @@ void add_contact(RingLoads& l, const dem::WallProfile& profile, double s, const 
   l.torque_z += rho * f_theta;
   l.circumferential += std::abs(f_theta);
   ++l.contacts;
+}
+
+double surface_node_dt(const dem::WallLaw& law, const fe::Nodes& nodes, const std::vector<int>& surface,
+                       const std::vector<double>& areas, double r_min) {
+  const double grain_area = std::numbers::pi * r_min * r_min;
+  double dt = std::numeric_limits<double>::infinity();
+  for (std::size_t a = 0; a < surface.size(); ++a) {
+    // Grains touching a wall in one layer have centres >= 2 r_min apart: at most
+    // A / (2 sqrt(3) r_min^2) < A / (pi r_min^2) of them on a node's tributary area A.
+    const double mass = nodes.mass[static_cast<std::size_t>(surface[a])] / std::max(1.0, areas[a] / grain_area);
+    dt = std::min(dt, std::visit(
+                          [&](const auto& l) -> double {
+                            if constexpr (std::is_same_v<std::decay_t<decltype(l)>, dem::LinearSpring>) {
+                              return l.stable_dt(mass);
+                            } else {
+                              throw InputError("", "specimen.wall_normal_stiffness",
+                                               "the FE-DEM coupling needs a linear grain-wall law");
+                            }
+                          },
+                          law));
+  }
+  return dt;
 }
 
 }  // namespace kolsky::coupling

@@ -53,4 +53,11 @@ struct RingLoads {
 void add_contact(RingLoads& loads, const dem::WallProfile& profile, double s, const dem::Vec3& x,
                  const dem::Vec3& on_surface);
 
+/// The grain springs' limit on a surface's nodes (s, raw): min over the nodes of
+/// sqrt(m / (N k)) of the wall law's stiffest spring, a node of mass m and tributary area A
+/// carrying at most N = max(1, A / (pi r_min^2)) grains. Throws InputError
+/// ("specimen.wall_normal_stiffness") for a wall law that is not a linear spring.
+double surface_node_dt(const dem::WallLaw& law, const fe::Nodes& nodes, const std::vector<int>& surface,
+                       const std::vector<double>& areas, double r_min);
+
 }  // namespace kolsky::coupling

@@ -65,6 +65,7 @@ void validate(const WallProfile& p, const char* path) {
 }
 
 double TubeCompliance::radial_stiffness(double radius) const {
+  if (wall_stiffness > 0) return 2 * std::numbers::pi * radius * height * wall_stiffness;
   return 2 * std::numbers::pi * height * youngs_modulus * thickness / radius;
 }
 

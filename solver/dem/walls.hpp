@@ -72,8 +72,12 @@ struct TubeCompliance {
   double thickness = 0.005;       ///< wall thickness t, m
   double density = 8100;          ///< kg/m^3
   double height = 0.0093;         ///< H, length over which the specimen pressure acts, m
+  /// Radial stiffness per unit inner-wall area p / u (Pa/m), e.g. a thick tube's Lame value
+  /// (fe::lame_wall_stiffness); 0: the thin-wall E t / R^2.
+  double wall_stiffness = 0;
 
-  /// K = 2 pi H E t / R (N/m) for inner radius R.
+  /// K = 2 pi R H k_w (N/m) for inner radius R: k_w = wall_stiffness, or E t / R^2 (thin wall,
+  /// K = 2 pi H E t / R).
   double radial_stiffness(double radius) const;
   /// m = rho 2 pi R t H (kg).
   double radial_mass(double radius) const;

@@ -189,22 +189,36 @@ shpb::SpecimenSpec read_specimen(JsonReader& r, const std::string& base_dir) {
 }
 
 // specimen.tube with a dem specimen (docs/coupling.md): rigid, the grains' own cylinder (the
-// default; not resolved when absent, so DEM scenes keep their resolved form), or meshed, an FE
-// tube in the FE-DEM coupling (bars.kind = meshed only).
+// default; not resolved when absent, so DEM scenes keep their resolved form); spring, the
+// cylinder's radial mode with the thick tube's Lame stiffness per wall area and the tube's
+// mass over the specimen length (dem::TubeCompliance); or meshed, an FE tube (bars.kind =
+// meshed: the FE-DEM coupling; characteristic: coupling::FeTube).
 void read_dem_tube(JsonReader& r, shpb::ExperimentSpec& e) {
   if (!r.has("specimen.tube")) return;
   const std::string kind = r.text("specimen.tube");
   if (kind == "rigid") return;
-  if (kind != "meshed")
-    r.fail("specimen.tube", "'" + kind + "' is not a tube of a dem specimen: rigid or meshed (meshed needs "
-                            "bars.kind = meshed)");
-  if (e.strain_rate || e.bar_kind != shpb::BarKind::meshed)
+  if (kind != "meshed" && kind != "spring")
+    r.fail("specimen.tube", "'" + kind + "' is not a tube of a dem specimen: rigid, spring or meshed");
+  const fe::LinearElastic material{r.number("specimen.tube_youngs_modulus"), r.number("specimen.tube_poisson_ratio"),
+                                   r.number("specimen.tube_density")};
+  const double thickness = r.number("specimen.tube_thickness");
+  if (kind == "spring") {
+    if (e.bar_kind == shpb::BarKind::meshed && !e.strain_rate)
+      r.fail("specimen.tube", "a spring tube around a dem specimen is not supported with bars.kind = meshed "
+                              "(the FE-DEM coupling needs a rigid or meshed tube)");
+    auto& d = std::get<dem::DemSpecimenParams>(e.specimen);
+    const double radius = 0.5 * shpb::specimen_diameter(e.specimen);
+    d.walls.tube_compliance = dem::TubeCompliance{material.youngs_modulus, thickness, material.density,
+                                                  shpb::specimen_length(e.specimen),
+                                                  fe::lame_wall_stiffness(material, radius, thickness)};
+    return;
+  }
+  if (e.strain_rate || e.bar_kind == shpb::BarKind::sphere_chain)
     r.fail("specimen.tube", "a meshed tube around a dem specimen needs bars.kind = meshed (the FE-DEM "
-                            "coupling, docs/coupling.md)");
+                            "coupling) or characteristic (coupling/fe_tube.hpp), docs/coupling.md");
   fe::MeshedTube t;
-  t.material = {r.number("specimen.tube_youngs_modulus"), r.number("specimen.tube_poisson_ratio"),
-                r.number("specimen.tube_density")};
-  t.thickness = r.number("specimen.tube_thickness");
+  t.material = material;
+  t.thickness = thickness;
   t.length = r.number("specimen.tube_length");
   if (t.length < shpb::specimen_length(e.specimen))
     r.fail("specimen.tube_length", "the meshed tube must be at least as long as the specimen");
@@ -295,9 +309,10 @@ Scene parse_scene(const nlohmann::json& j, const std::string& file, const std::s
   e.output.interval = r.number("output.interval");
   if (dem_specimen) e.output.snapshot_interval = r.number("output.snapshot_interval");
   if (dem_specimen) read_dem_tube(r, e);
-  if (dem_specimen && !walls && e.bar_kind == shpb::BarKind::meshed) {
-    try {  // what the FE-DEM coupling refuses, named with the scene file
-      shpb::check_fe_dem_supported(e);
+  if (dem_specimen && !walls && (e.bar_kind == shpb::BarKind::meshed || e.dem_tube)) {
+    try {  // what the FE-DEM coupling or the FE tube refuses, named with the scene file
+      if (e.bar_kind == shpb::BarKind::meshed) shpb::check_fe_dem_supported(e);
+      else shpb::check_fe_tube_supported(e);
     } catch (const InputError& err) {
       r.fail(err.path(), err.rule());
     }

@@ -139,9 +139,11 @@ std::vector<ParamSpec> build_table() {
   s.add(VT::number, "specimen.cohesion", pt.cohesion, "Pa", kNonNegative,
         "Mohr-Coulomb cohesion (Sec. 2.3.2: zero)", "specimen.model=fe");
   s.add(VT::choice, "specimen.tube", "rigid", "-", kNoRange,
-        "Confining tube: none, rigid, spring (massless Lame wall) or meshed; a dem specimen's "
-        "is rigid or meshed, meshed only with bars.kind = meshed (the FE-DEM coupling, "
-        "docs/coupling.md; it reads the tube_* keys then)",
+        "Confining tube: none, rigid, spring (Lame wall) or meshed; a dem specimen's is rigid, "
+        "spring (the grains' cylinder with the thick tube's Lame stiffness and its mass over the "
+        "specimen length; not with bars.kind = meshed) or meshed (bars.kind = meshed: the FE-DEM "
+        "coupling; characteristic: an FE tube around the grains), docs/coupling.md; spring and "
+        "meshed read the tube_* keys",
         "specimen.model=fe|dem", {"none", "rigid", "spring", "meshed"});
   s.add(VT::number, "specimen.tube_youngs_modulus", mt.material.youngs_modulus, "Pa", kPositive,
         "Tube E (steel 200e9, polycarbonate 1.4e9; Sec. 2.3.1)", "specimen.model=fe");

@@ -50,4 +50,22 @@ void check_fe_dem_supported(const ExperimentSpec& spec) {
     throw InputError("", "output.snapshot_interval", "particle snapshots are not supported with bars.kind = meshed yet: set it to 0");
 }
 
+void check_fe_tube_supported(const ExperimentSpec& spec) {
+  const dem::DemSpecimenParams& d = std::get<dem::DemSpecimenParams>(spec.specimen);
+  if (spec.strain_rate)
+    throw InputError("", "specimen.tube", "a meshed tube is not supported with loading.kind = strain_rate");
+  if (spec.bar_kind != BarKind::characteristic)
+    throw InputError("", "specimen.tube",
+                     "a meshed tube around a dem specimen needs bars.kind = meshed or characteristic");
+  if (d.walls.hold_until_loaded)
+    throw InputError("", "specimen.hold_until_loaded",
+                     "not supported with a meshed tube (the tube steps with the grains from t = 0): set it to false");
+  if (d.walls.preload_on_supports)
+    throw InputError("", "specimen.preload_on_supports",
+                     "not supported with a meshed tube (the tube carries the full contact forces): set it to false");
+  if (d.breakage) throw InputError("", "specimen.breakage", "not supported with a meshed tube");
+  if (d.walls.tube_compliance)
+    throw InputError("", "specimen.tube", "a meshed tube replaces the compliant one: not both");
+}
+
 }  // namespace kolsky::shpb

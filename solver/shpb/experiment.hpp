@@ -90,8 +90,9 @@ struct ExperimentSpec {
   BarMeshSpec bar_mesh;
   bar::Pulse pulse = bar::TrapezoidPulse{};
   SpecimenSpec specimen = bar::ColumnParams{};
-  /// A DEM specimen's tube as an FE mesh (specimen.tube = meshed, bars.kind = meshed only: the
-  /// FE-DEM coupling, coupling/fe_dem.hpp); unset: the grains' rigid cylinder.
+  /// A DEM specimen's tube as an FE mesh (specimen.tube = meshed): with bars.kind = meshed the
+  /// FE-DEM coupling (coupling/fe_dem.hpp), with characteristic bars coupling::FeTube
+  /// (coupling/fe_tube.hpp); unset: the grains' rigid cylinder (or its compliance).
   std::optional<fe::MeshedTube> dem_tube;
   TimeSpec time;
   OutputSpec output;
@@ -101,5 +102,9 @@ struct ExperimentSpec {
 /// as InputError("", key, rule); here, beside the spec, so that the scene reader can name the
 /// scene file without linking the assemblies. Needs a dem specimen.
 void check_fe_dem_supported(const ExperimentSpec& spec);
+/// What an FE tube around a dem specimen between 1-D bars (coupling/fe_tube.hpp) refuses, the
+/// same way: other bars than characteristic, strain-rate walls, a held or preloaded specimen,
+/// breakage. Needs a dem specimen with spec.dem_tube set.
+void check_fe_tube_supported(const ExperimentSpec& spec);
 
 }  // namespace kolsky::shpb

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <iomanip>
+#include <numbers>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -60,6 +61,19 @@ double gauge_stress(const Bar& b, double d, double t) {
 
 [[noreturn]] void misfit(const std::string& rule) { throw InputError("", "restart", rule); }
 
+// The FE tube of a dem specimen (spec.dem_tube), built around the packed grains.
+std::optional<coupling::FeTube> make_fe_tube(const ExperimentSpec& spec, const Specimen& specimen) {
+  if (!spec.dem_tube) return std::nullopt;
+  const auto* d = std::get_if<dem::DemSpecimen>(&specimen);
+  if (!d) throw InputError("", "specimen.tube", "a meshed tube here needs specimen.model = dem");
+  check_fe_tube_supported(spec);
+  coupling::FeTubeParams p;
+  p.tube = *spec.dem_tube;
+  p.specimen_length = d->length();
+  p.specimen_radius = std::sqrt(d->area() / std::numbers::pi);
+  return coupling::FeTube(p, d->system());
+}
+
 }  // namespace
 
 OneDimBarsAssembly::OneDimBarsAssembly(const ExperimentSpec& spec)
@@ -71,19 +85,24 @@ OneDimBarsAssembly::OneDimBarsAssembly(const ExperimentSpec& spec)
       check_stability_(spec.time.check_stability),
       specimen_(make_specimen(spec.specimen, spec.time.check_stability)),
       incident_(make_bar(spec.bar_kind, spec.incident, spec.pulse, face_mass_of(specimen_))),
-      transmission_(make_bar(spec.bar_kind, spec.transmission, std::nullopt, face_mass_of(specimen_))) {}
+      transmission_(make_bar(spec.bar_kind, spec.transmission, std::nullopt, face_mass_of(specimen_))),
+      tube_(make_fe_tube(spec, specimen_)) {}
 
 double OneDimBarsAssembly::stable_dt() const {
-  return std::min({stable_dt_of(specimen_), stable_dt_of(incident_), stable_dt_of(transmission_)});
+  const double dt = std::min({stable_dt_of(specimen_), stable_dt_of(incident_), stable_dt_of(transmission_)});
+  return tube_ ? std::min(dt, tube_->stable_dt()) : dt;
 }
 
 double OneDimBarsAssembly::arrival_time() const { return incident_arrival_time(kind_, incident_spec_); }
 
 void OneDimBarsAssembly::step(long n, double t, double dt, const RunControl& control) {
   FaceState faces{intrusion(incident_), intrusion(transmission_), rate(incident_), rate(transmission_)};
+  if (tube_) tube_->drive(std::get<dem::DemSpecimen>(specimen_).coupled_system());
   std::visit([&](auto& sp) {
     forces_ = sp.forces(faces);
     at_forces_evaluated(sp, n, t, control);  // positions, velocities, forces all at t^n here
+    if constexpr (std::is_same_v<std::decay_t<decltype(sp)>, dem::DemSpecimen>)
+      if (tube_) tube_->load_and_advance(sp.system(), dt);  // before the drift moves the grains
     sp.advance(dt);
   }, specimen_);
   std::visit([&](auto& b) { b.step(t, dt, forces_.front); }, incident_);
@@ -107,11 +126,12 @@ void OneDimBarsAssembly::step(long n, double t, double dt, const RunControl& con
 void OneDimBarsAssembly::observe(double t) {
   held_ = std::visit([](const auto& sp) { return sp.energy().total(); }, specimen_) +
           face_ke(incident_) + face_ke(transmission_);
+  if (tube_) held_ += tube_->kinetic_energy() + tube_->material_work();
   delivered_ = delivered(incident_) + delivered(transmission_);
 
   bool ok = std::visit([](const auto& sp) { return sp.finite(); }, specimen_) &&
             std::isfinite(held_) && std::isfinite(delivered_);
-  ok = ok && finite(incident_) && finite(transmission_);
+  ok = ok && finite(incident_) && finite(transmission_) && (!tube_ || tube_->finite());
   if (!ok) throw NumericalError("non-finite state at t = " + std::to_string(t) + " s", t);
   const double stored_0 = std::visit([](const auto& sp) { return energy_stored_at_start(sp); }, specimen_);
   // Held: specimen and bar faces; supplied: what entered through the faces; judged against
@@ -167,6 +187,13 @@ ProbeRecords OneDimBarsAssembly::probes() const {
     r.push_back({gauge_probe_name("transmission", k), "1",
                  "transmission-bar gauge strain as measured (compression -)",
                  [bt, d = transmission_spec_.gauges[k], et](double t) { return -gauge_stress(*bt, d, t) / et; }});
+  if (tube_) {
+    const coupling::FeTube* tube = &*tube_;
+    r.push_back({"tube_force", "N", "radial force of the grains on the FE tube wall",
+                 [tube](double) { return tube->radial_force(); }});
+    r.push_back({"tube_wall_displacement", "m", "ring-area mean radial displacement of the FE tube's inner wall",
+                 [tube](double) { return tube->mean_wall_displacement(); }});
+  }
   std::visit([&](const auto& s) { add_model_probes(s, r); }, specimen_);
   return r;
 }

@@ -11,15 +11,22 @@
 //   growth beyond energy_tolerance * (injected + stored at start) is a blow-up (NumericalError).
 //   Probes: the face waves are exact (the bars' characteristic split at the face); gauges are
 //   the bars' stress at the gauge positions as strain, compression negative as measured.
+//   An FE tube (specimen.tube = meshed around a dem specimen, characteristic bars only): the
+//   model level "1-D bars + FE tube" of Chapter 3. coupling::FeTube gives the grains'
+//   cylinder the tube wall's shape before the specimen's forces of t^n and steps the tube
+//   under their ring loads before the specimen advances; its kinetic energy and material work
+//   join the energy held (the wall's work on the grains and the loads' work on the tube cancel).
 //   Checkpoint/restart: bars, specimen, face forces and the wave-energy accumulators; not for
-//   the fe specimen, which has no checkpoint state.
+//   the fe specimen or an FE tube, which have no checkpoint state.
 // The members every assembly provides are listed in shpb/assembly.hpp.
 #pragma once
+#include <optional>
 #include <variant>
 
 #include "bar/characteristic_bar.hpp"
 #include "bar/specimen_column.hpp"
 #include "bar/sphere_chain.hpp"
+#include "coupling/fe_tube.hpp"
 #include "dem/dem_specimen.hpp"
 #include "dem/dem_state.hpp"
 #include "fe/fe_specimen.hpp"
@@ -52,7 +59,7 @@ class OneDimBarsAssembly {
   void observe(double t);
   ProbeRecords probes() const;  ///< samplers read *this (probe_record.hpp, "Lifetime")
   void finish(RunResult&) const {}  ///< the face waves are already exact
-  bool can_checkpoint() const { return !std::holds_alternative<fe::FeSpecimen>(specimen_); }
+  bool can_checkpoint() const { return !std::holds_alternative<fe::FeSpecimen>(specimen_) && !tube_; }
   void save_into(ShpbState& s) const;  ///< bars, specimen, forces, accumulators
   /// Throws InputError("", "restart", ...) when s was written for other bars or another
   /// specimen model; restore_from needs a state that passed it.
@@ -71,6 +78,7 @@ class OneDimBarsAssembly {
   bool check_stability_;  // time.check_stability: the energy check is on
   Specimen specimen_;
   Bar incident_, transmission_;
+  std::optional<coupling::FeTube> tube_;  // specimen.tube = meshed (dem specimen)
   FaceForces forces_;
   double w_i_ = 0, w_r_ = 0, w_t_ = 0;  // Eqs. 2.11-2.13 from the face waves
   double prev_[3] = {0, 0, 0};          // s_i, s_r, s_t at the previous step

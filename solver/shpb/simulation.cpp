@@ -193,7 +193,7 @@ RunResult SimulatedShpb::run_on(A& assembly, Progress* progress, const RunContro
   r.probes = empty_probes(records);  // entry k of r.probes is records[k]: made from it here
   const bool checkpointing = control.checkpoint_every > 0 && control.checkpoint;
   if ((checkpointing || control.resume) && !assembly.can_checkpoint())
-    throw InputError("", "specimen.model", "checkpoint and restart are not available for the fe specimen");
+    throw InputError("", "specimen.model", "checkpoint and restart are not available for this model (an fe specimen or an FE mesh around a dem specimen)");
   // This run's schedule: the plan, refined during the run when a break lowers the limit.
   time_loop::Schedule s = schedule_;
   long first = 0;

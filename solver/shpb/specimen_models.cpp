@@ -18,6 +18,12 @@ void add_model_probes(const dem::DemSpecimen& d, ProbeRecords& out) {
   out.push_back({"grain_contacts", "1", "touching grain pairs", [=](double) { return pairs(); }});
   out.push_back({"wall_contacts", "1", "touching grain-wall contacts (end planes and tube)",
                  [=](double) { return walls(); }});
+  if (sys->n_cylinders() == 1 && sys->cylinder(0).compliance) {  // specimen.tube = spring
+    out.push_back({"tube_force", "N", "radial force of the grains on the compliant tube",
+                   [sys](double) { return sys->cylinder_force(0); }});
+    out.push_back({"tube_wall_displacement", "m", "radial displacement of the compliant tube's wall (its one radial mode)",
+                   [sys](double) { return sys->cylinder_displacement(0); }});
+  }
   if (d.breakage() == nullptr) return;  // the probes of a specimen without breakage stay as they were
   const dem::DemSpecimen* s = &d;
   auto ledger = [s]() -> const dem::BreakageLedger& { return s->breakage()->ledger; };
