@@ -188,7 +188,8 @@ double curve_rms_difference(const CaseResult& a, const Measures& ma, const CaseR
   constexpr int kPoints = 41;  // 0.1 % strain apart over 2-6 %: finer than the 1 us samples' ~0.05 %
   double s = 0;
   for (int k = 0; k < kPoints; ++k) {
-    const double e = lo + (hi - lo) * k / (kPoints - 1);
+    // The last point exactly at hi: lo + (hi - lo) may round above a curve's largest strain.
+    const double e = k == kPoints - 1 ? hi : lo + (hi - lo) * k / (kPoints - 1);
     const double d = stress_at(ca, e) - stress_at(cb, e);
     if (!std::isfinite(d)) return NAN;
     s += d * d;
