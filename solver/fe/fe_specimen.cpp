@@ -31,12 +31,6 @@ Body make_body(const FeSpecimenParams& p, Block& specimen, std::optional<Block>&
 
 }  // namespace
 
-double lame_wall_stiffness(const LinearElastic& m, double a, double t) {
-  const double b = a + t;
-  const double nu = m.poisson_ratio;
-  return m.youngs_modulus * (b * b - a * a) / (a * ((1.0 - nu) * a * a + (1.0 + nu) * b * b));
-}
-
 void add_specimen_blocks(const FeSpecimenParams& p, Mesh& mesh, std::vector<Part>& parts, Block& specimen,
                          std::optional<Block>& tube) {
   require(p.radius > 0.0, "radius", "must be > 0");

@@ -40,10 +40,6 @@ struct MeshedTube {
 };
 using Tube = std::variant<NoTube, RigidTube, SpringTube, MeshedTube>;
 
-/// Radial stiffness per unit inner-wall area p/u(a) of a free-ended (sigma_zz = 0) thick elastic
-/// tube, a = inner radius, b = a + thickness: E (b^2 - a^2) / (a [(1 - nu) a^2 + (1 + nu) b^2])
-/// (Pa/m; Timoshenko & Goodier 1970, Sec. 28). Thin-wall limit E t / a^2.
-double lame_wall_stiffness(const LinearElastic& m, double inner_radius, double thickness);
 
 struct FeSpecimenParams {
   double radius = 9.55e-3;  ///< R_s, m (Sec. 2.2: d = 19.1 mm)

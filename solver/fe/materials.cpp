@@ -118,4 +118,10 @@ double max_wave_speed(const Material& m) {
   return std::sqrt(max_constrained_modulus(m) / rho);
 }
 
+double lame_wall_stiffness(const LinearElastic& m, double a, double t) {
+  const double b = a + t;
+  const double nu = m.poisson_ratio;
+  return m.youngs_modulus * (b * b - a * a) / (a * ((1.0 - nu) * a * a + (1.0 + nu) * b * b));
+}
+
 }  // namespace kolsky::fe

@@ -35,6 +35,12 @@ struct LinearElastic {
   void validate(const char* path) const;
 };
 
+/// Radial stiffness per unit inner-wall area p/u(a) of a free-ended (sigma_zz = 0) thick elastic
+/// tube, a = inner radius, b = a + thickness: E (b^2 - a^2) / (a [(1 - nu) a^2 + (1 + nu) b^2])
+/// (Pa/m; Timoshenko & Goodier 1970, Sec. 28). Thin-wall limit E t / a^2. Here, beside the
+/// material, so that the scene layer can use it without the FE body (fuzz/CMakeLists.txt).
+double lame_wall_stiffness(const LinearElastic& m, double inner_radius, double thickness);
+
 /// Tabulated compaction EOS (LS-DYNA *EOS_TABULATED_COMPACTION semantics, references.md Sec. 5):
 /// P = max(0, P_load(eps_max) - K_u (eps_max - eps_v)), eps_max the largest eps_v reached.
 struct CompactionEos {
