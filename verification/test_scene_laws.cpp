@@ -109,6 +109,21 @@ TEST_F(SceneLaws, WithoutTheKeyTheLawIsHertzMindlinAsBefore) {
   EXPECT_EQ(name_of(make_contact_law({Material{}}, DemSpecimenParams{}.contact)), "hertz_mindlin");
 }
 
+TEST_F(SceneLaws, PackingFrictionReachesTheJammingStageOnly) {
+  // mu_pack of the jamming stage (docs/dem.md, Packing): the default is the one every scene
+  // packed with before the key existed; the run's own law keeps the scene's grain friction.
+  EXPECT_EQ(dem_params(dem_scene({})).packing.jam_friction, PackingParams{}.jam_friction);
+  const DemSpecimenParams d = dem_params(dem_scene({{"packing_friction", 0.1}, {"grain_friction", 0.5}}));
+  EXPECT_EQ(d.packing.jam_friction, 0.1);
+  EXPECT_EQ(std::get<HertzMindlinParams>(d.contact).friction, 0.5);
+  try {
+    dem_params(dem_scene({{"packing_friction", -0.1}}));
+    ADD_FAILURE() << "a negative packing friction accepted";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.path(), "specimen.packing_friction");
+  }
+}
+
 TEST_F(SceneLaws, DemSpecimenDefaultsToTheFractionItsRunsAlwaysUsed) {
   // The raw limit has no safety factor in it, so the scene's one factor defaults to 0.5 x 0.3
   // for a DEM specimen: the 0.5 of the loop times the 0.3 DemSystem applied inside before.

@@ -70,6 +70,7 @@ dem::DemSpecimenParams read_dem_specimen(JsonReader& r, const std::string& base_
     d.packing.jam_mass_scaling = true;
     d.packing.jam_steps_per_stage = dem::kJamScaledStepsPerStage;
   }
+  d.packing.jam_friction = r.number("specimen.packing_friction");
   if (std::string cache = r.text("specimen.packing_cache"); !cache.empty()) {
     fs::path cp(cache);  // relative to the scene file's folder, like the CSV paths
     if (cp.is_relative()) cp = fs::path(base_dir.empty() ? "." : base_dir) / cp;

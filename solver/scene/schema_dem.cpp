@@ -50,6 +50,11 @@ void add_dem_rows(TableBuilder& s) {
             " steps per stage; about 3-4x faster, same porosity, coordination and rattlers "
             "(docs/dem.md, Packing); a loose packing ignores it",
         dem);
+  s.add(VT::number, "specimen.packing_friction", pack.jam_friction, "-", kNonNegative,
+        "Grain-grain friction while a jammed packing grows (mu_pack): it sets how loose a "
+        "contact network the grains lock into; the run uses the contact law's own friction "
+        "(docs/dem.md, Packing); a loose packing ignores it",
+        dem);
   s.add(VT::string, "specimen.packing_cache", std::string(), "-", kNoRange,
         "Folder (relative to the scene file) where packings are stored by a hash of all packing "
         "parameters and reused; empty = no cache (docs/dem.md, Packing cache)",
