@@ -205,9 +205,10 @@ int cmd_run(const std::vector<std::string>& args) {
   nlohmann::json ck_meta = {{"scene", sc.resolved}, {"scene_file", sc.file},
                             {"git_commit", build_info::git_commit()}, {"kolsky_version", build_info::version()}};
   if (o.checkpoint_every > 0) {
-    if (!sim->can_checkpoint())
+    if (!sim->can_checkpoint())  // the FE parts have no checkpoint state
       throw InputError(file, "specimen.model",
-                       "--checkpoint-every: checkpoints are not available for the fe specimen");
+                       "--checkpoint-every: checkpoints are not available for this model (an fe specimen, or FE "
+                       "parts around a dem specimen: bars.kind = meshed or specimen.tube = meshed)");
     control.checkpoint_every = steps_per(o.checkpoint_every, sim->schedule().dt, sim->schedule().n_steps);
     control.checkpoint = [&](const shpb::ShpbState& s) {
       io::write_checkpoint_hdf5(ck_file, {ck_meta, s});
