@@ -100,7 +100,7 @@ TEST(FeTube, OneDimBarsDriveTheDemInAnFeTubeAndTheLedgerCloses) {
   EXPECT_LT(std::abs(held - delivered) / delivered, 2e-3);
   // Lame's closed form holds for a uniform pressure; the grains press in discrete spots and
   // the short tube bends along z, and the 2 x 25 Q4 mesh adds its own error (measured
-  // 0.998). 5 % tells it from the thin-wall formula's stiffness (x 1.49 here) and from a
+  // 0.998). 5 % tells it from the thin-wall formula's stiffness (x 1.47 here) and from a
   // tube loaded twice or not at all.
   EXPECT_NEAR(ratio, 1.0, 0.05);
 }
