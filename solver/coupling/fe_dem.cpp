@@ -67,13 +67,7 @@ double FeDemShpb::specimen_area() const {
 
 void FeDemShpb::map_wall(fe::Surface s, int slot, const dem::WallProfile& profile, bool plane) {
   RingLoads& l = loads_[static_cast<int>(s)];
-  l = RingLoads(profile.station.size());
-  const dem::DemSystem& sys = dem_.system();
-  const auto& x = sys.particles().x;
-  sys.for_each_wall_force(slot, [&](int i, const dem::Vec3& f_grain) {
-    const dem::Vec3& xi = x[static_cast<std::size_t>(i)];
-    add_contact(l, profile, plane ? std::hypot(xi.x, xi.y) : xi.z, xi, -1.0 * f_grain);
-  });
+  l = wall_ring_loads(dem_.system(), slot, profile, plane);
   fe_.add_surface_loads(s, l.f_r, l.f_z);
 }
 

@@ -18,7 +18,7 @@
 #include "coupling/surface_coupling.hpp"
 #include "dem/dem_system.hpp"
 #include "fe/body.hpp"
-#include "fe/fe_specimen.hpp"
+#include "fe/meshed_bars_tube.hpp"
 
 namespace kolsky::coupling {
 

@@ -57,6 +57,16 @@ void add_contact(RingLoads& l, const dem::WallProfile& profile, double s, const 
   ++l.contacts;
 }
 
+RingLoads wall_ring_loads(const dem::DemSystem& sys, int slot, const dem::WallProfile& profile, bool plane) {
+  RingLoads l(profile.station.size());
+  const auto& x = sys.particles().x;
+  sys.for_each_wall_force(slot, [&](int i, const dem::Vec3& f_grain) {
+    const dem::Vec3& xi = x[static_cast<std::size_t>(i)];
+    add_contact(l, profile, plane ? std::hypot(xi.x, xi.y) : xi.z, xi, -1.0 * f_grain);
+  });
+  return l;
+}
+
 double surface_node_dt(const dem::WallLaw& law, const fe::Nodes& nodes, const std::vector<int>& surface,
                        const std::vector<double>& areas, double r_min) {
   const double grain_area = std::numbers::pi * r_min * r_min;

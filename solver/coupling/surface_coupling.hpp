@@ -17,6 +17,7 @@
 #pragma once
 #include <vector>
 
+#include "dem/dem_system.hpp"
 #include "dem/vec3.hpp"
 #include "dem/walls.hpp"
 #include "fe/mesh.hpp"
@@ -52,6 +53,11 @@ struct RingLoads {
 /// grain centre x, station s on the surface whose nodes have stations profile.station.
 void add_contact(RingLoads& loads, const dem::WallProfile& profile, double s, const dem::Vec3& x,
                  const dem::Vec3& on_surface);
+
+/// The ring loads of wall `slot`'s contacts in `sys`'s last force evaluation on the surface
+/// whose shape `profile` is: each grain's contact force reversed, at the grain's station (its
+/// distance from the axis on a plane face, its z on a cylinder).
+RingLoads wall_ring_loads(const dem::DemSystem& sys, int slot, const dem::WallProfile& profile, bool plane);
 
 /// The grain springs' limit on a surface's nodes (s, raw): min over the nodes of
 /// sqrt(m / (N k)) of the wall law's stiffest spring, a node of mass m and tributary area A

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <stdexcept>
 #include <string>
 
 #include "core/errors.hpp"
@@ -33,21 +34,51 @@ Body build(const MeshedBarsTubeParams& p, Block& incident, Block& transmission, 
                            p.specimen_length + p.transmission.length, p.bar_n_r,
                            axial_element_count(p.transmission.length, p.bar_element_length));
   parts.push_back(Part{p.transmission.material, transmission.first_element, transmission.n_elements()});
-  if (p.tube) {
-    const MeshedTube& t = *p.tube;
-    require(t.thickness > 0.0, "specimen.tube_thickness", "must be > 0");
-    require(t.length >= p.specimen_length, "specimen.tube_length", "must be >= the specimen length");
-    require(t.n_r >= 1 && t.n_z >= 1, "specimen.tube", "the tube mesh needs n_r, n_z >= 1");
-    t.material.validate("specimen.tube");
-    const double zc = 0.5 * p.specimen_length;
-    tube = add_block(mesh, p.specimen_radius, p.specimen_radius + t.thickness, zc - 0.5 * t.length,
-                     zc + 0.5 * t.length, t.n_r, t.n_z);
-    parts.push_back(Part{t.material, tube->first_element, tube->n_elements()});
-  }
+  if (p.tube) tube = add_tube_block(mesh, parts, *p.tube, p.specimen_length, p.specimen_radius);
   return Body(std::move(mesh), std::move(parts), p.threads);
 }
 
 }  // namespace
+
+Block add_tube_block(Mesh& mesh, std::vector<Part>& parts, const MeshedTube& t, double specimen_length,
+                     double specimen_radius) {
+  require(t.thickness > 0.0, "specimen.tube_thickness", "must be > 0");
+  require(t.length >= specimen_length, "specimen.tube_length", "must be >= the specimen length");
+  require(t.n_r >= 1 && t.n_z >= 1, "specimen.tube", "the tube mesh needs n_r, n_z >= 1");
+  t.material.validate("specimen.tube");
+  const double zc = 0.5 * specimen_length;
+  const Block tube = add_block(mesh, specimen_radius, specimen_radius + t.thickness, zc - 0.5 * t.length,
+                               zc + 0.5 * t.length, t.n_r, t.n_z);
+  parts.push_back(Part{t.material, tube.first_element, tube.n_elements()});
+  return tube;
+}
+
+void tube_wall_surface(const Block& tube, double tube_length, double specimen_radius, std::vector<int>& nodes,
+                       std::vector<double>& areas) {
+  const double h = tube_length / tube.n_z;
+  for (int j = 0; j <= tube.n_z; ++j) {
+    nodes.push_back(tube.node(0, j));
+    const double span = (j == 0 || j == tube.n_z) ? 0.5 * h : h;
+    areas.push_back(2.0 * std::numbers::pi * specimen_radius * span);
+  }
+}
+
+void add_surface_loads(Nodes& nd, const std::vector<int>& nodes, const std::vector<double>& f_r,
+                       const std::vector<double>& f_z, std::vector<double>& prev_fr, std::vector<double>& prev_fz,
+                       double& work) {
+  if (f_r.size() != nodes.size() || f_z.size() != nodes.size())
+    throw std::invalid_argument("add_surface_loads: one load per surface node");
+  for (std::size_t a = 0; a < nodes.size(); ++a) {
+    const auto n = static_cast<std::size_t>(nodes[a]);
+    // Trapezoid over [t^{n-1}, t^n], as the far-end traction.
+    work += 0.5 * (prev_fr[a] + f_r[a]) * (nd.ur[n] - nd.ur_prev[n]) +
+            0.5 * (prev_fz[a] + f_z[a]) * (nd.uz[n] - nd.uz_prev[n]);
+    prev_fr[a] = f_r[a];
+    prev_fz[a] = f_z[a];
+    nd.fr_ext[n] += f_r[a];
+    nd.fz_ext[n] += f_z[a];
+  }
+}
 
 MeshedBarsTube::MeshedBarsTube(const MeshedBarsTubeParams& p)
     : p_(p), body_(build(p, incident_, transmission_, tube_)) {
@@ -61,14 +92,7 @@ MeshedBarsTube::MeshedBarsTube(const MeshedBarsTubeParams& p)
     for (int n : surfaces_[s]) r.push_back(nd.r0[static_cast<std::size_t>(n)]);
     areas_[s] = ring_tributary_areas(r);
   }
-  if (tube_) {
-    const double h = p.tube->length / tube_->n_z;
-    for (int j = 0; j <= tube_->n_z; ++j) {
-      surfaces_[2].push_back(tube_->node(0, j));
-      const double span = (j == 0 || j == tube_->n_z) ? 0.5 * h : h;
-      areas_[2].push_back(2.0 * std::numbers::pi * p.specimen_radius * span);
-    }
-  }
+  if (tube_) tube_wall_surface(*tube_, p.tube->length, p.specimen_radius, surfaces_[2], areas_[2]);
   for (int s = 0; s < 3; ++s) {
     prev_fr_[s].assign(surfaces_[s].size(), 0.0);
     prev_fz_[s].assign(surfaces_[s].size(), 0.0);
@@ -103,20 +127,7 @@ void MeshedBarsTube::begin_forces(double t) {
 
 void MeshedBarsTube::add_surface_loads(Surface s, const std::vector<double>& f_r, const std::vector<double>& f_z) {
   const int k = static_cast<int>(s);
-  const std::vector<int>& nodes = surfaces_[k];
-  if (f_r.size() != nodes.size() || f_z.size() != nodes.size())
-    throw std::invalid_argument("MeshedBarsTube::add_surface_loads: one load per surface node");
-  Nodes& nd = body_.nodes();
-  for (std::size_t a = 0; a < nodes.size(); ++a) {
-    const auto n = static_cast<std::size_t>(nodes[a]);
-    // Trapezoid over [t^{n-1}, t^n], as the far-end traction.
-    surface_work_ += 0.5 * (prev_fr_[k][a] + f_r[a]) * (nd.ur[n] - nd.ur_prev[n]) +
-                     0.5 * (prev_fz_[k][a] + f_z[a]) * (nd.uz[n] - nd.uz_prev[n]);
-    prev_fr_[k][a] = f_r[a];
-    prev_fz_[k][a] = f_z[a];
-    nd.fr_ext[n] += f_r[a];
-    nd.fz_ext[n] += f_z[a];
-  }
+  fe::add_surface_loads(body_.nodes(), surfaces_[k], f_r, f_z, prev_fr_[k], prev_fz_[k], surface_work_);
 }
 
 void MeshedBarsTube::advance(double dt) { body_.advance(dt, 0.0); }

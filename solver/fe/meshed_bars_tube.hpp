@@ -33,6 +33,21 @@ struct MeshedBarsTubeParams {
   int threads = 1;
 };
 
+/// The meshed tube around the specimen gap as a block of `mesh` with its Part: r in
+/// [R_s, R_s + t], centred on the gap (z in [L_s/2 - l/2, L_s/2 + l/2]), free ends. Throws
+/// InputError ("specimen.tube_thickness", "specimen.tube_length", "specimen.tube").
+Block add_tube_block(Mesh& mesh, std::vector<Part>& parts, const MeshedTube& t, double specimen_length,
+                     double specimen_radius);
+/// The tube's inner-wall nodes (ascending z) and their tributary areas 2 pi R_s x span (m^2).
+void tube_wall_surface(const Block& tube, double tube_length, double specimen_radius, std::vector<int>& nodes,
+                       std::vector<double>& areas);
+/// Adds the loads f_r, f_z (N, one per node of `nodes`) at t^n to the external forces and their
+/// work over [t^{n-1}, t^n] (trapezoid in force over the step's displacement) to `work`;
+/// prev_* hold the loads of t^{n-1} and take these.
+void add_surface_loads(Nodes& nd, const std::vector<int>& nodes, const std::vector<double>& f_r,
+                       const std::vector<double>& f_z, std::vector<double>& prev_fr, std::vector<double>& prev_fz,
+                       double& work);
+
 /// The three surfaces the grains touch; node lists ascending in r (faces) or z (tube wall).
 enum class Surface { incident_face = 0, transmission_face = 1, tube_wall = 2 };
 
