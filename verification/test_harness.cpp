@@ -132,6 +132,26 @@ TEST(HarnessTrend, PassesWhenItHolds) {
   EXPECT_EQ(*b.value, 0.0);
 }
 
+// The Chapter 5 driver measures two parts on two threads and merges them: every value and
+// note must arrive, and an id measured by both parts is a driver bug, not a silent overwrite.
+TEST(HarnessMeasurements, MergeKeepsValuesAndNotesAndRefusesDuplicates) {
+  Measurements whole, part;
+  whole.scalar("a", 1.5);
+  whole.note("a", "first");
+  part.trend("b", true, "holds");
+  part.note("a", "second");
+  part.note("b", "why");
+  whole.merge(part);
+  ASSERT_NE(whole.find("b"), nullptr);
+  EXPECT_TRUE(whole.find("b")->holds);
+  EXPECT_EQ(whole.find("a")->value, 1.5);
+  EXPECT_EQ(whole.note_for("a"), "first; second");
+  EXPECT_EQ(whole.note_for("b"), "why");
+  Measurements clash;
+  clash.scalar("a", 2.0);
+  EXPECT_THROW(whole.merge(clash), std::invalid_argument);
+}
+
 TEST(HarnessCurve, XShiftWithinXtolPassesAndWithoutFails) {
   Curve measured;
   for (int i = 0; i <= 200; ++i) {

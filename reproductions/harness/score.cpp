@@ -95,6 +95,11 @@ void Measurements::curve(const std::string& id, Curve measured) {
 
 void Measurements::note(const std::string& id, std::string text) { append(notes_[id], text); }
 
+void Measurements::merge(const Measurements& other) {
+  for (const auto& [id, m] : other.values_) add(id, m);
+  for (const auto& [id, text] : other.notes_) append(notes_[id], text);
+}
+
 const Measurement* Measurements::find(const std::string& id) const {
   const auto it = values_.find(id);
   return it == values_.end() ? nullptr : &it->second;

@@ -33,6 +33,9 @@ class Measurements {
   void curve(const std::string& id, Curve measured);
   /// Free text shown with the target in results.json and report.md; repeated calls append.
   void note(const std::string& id, std::string text);
+  /// Adds every value and note of `other` (a part of the set measured apart, e.g. on another
+  /// thread); throws std::invalid_argument as above if an id is in both.
+  void merge(const Measurements& other);
 
   const Measurement* find(const std::string& id) const;
   std::string note_for(const std::string& id) const;
