@@ -3,6 +3,8 @@
 //    Eq. 5.13 (the elastic Hertz force reaching F_crit), over a sweep of grain sizes;
 //  - a grain crushed by a moving platen breaks in the first step whose wall force reaches
 //    F_crit (r' = r, rigid wall), not before;
+//  - on a linear wall, F_crit is the rigid plane's by default and four times it with
+//    wall_as_grain (E' of two alike grains);
 //  - coordination limit (c_lim contacts never break, c_lim = 0 lets them) and comminution
 //    limit (below it, never, at forces far above F_crit);
 //  - a replacement keeps volume (daughters + lost = parent), momentum per retained mass, and
@@ -100,6 +102,41 @@ TEST(BreakageEngine, PlatenCrushBreaksInTheFirstStepAboveTheCriticalForce) {
     previous = f;
   }
   ASSERT_LT(n, 200000) << "the platen never broke the grain";
+}
+
+TEST(BreakageEngine, WallContactTakesTheRigidPlaneOrTheAlikeGrainModulus) {
+  const double r = 3e-4, k = 1e9;  // a stiff linear wall: overlaps of a few percent of r
+  const Material& m = kBusySand[0];
+  const auto on_wall = [&](double force) {
+    Particles p;
+    p.add({0, 0, r - force / k}, r, 0, kBusySand);
+    DemSystem sys(p, kBusySand, HertzMindlin(kBusySand, kHm));
+    sys.add_plane({{0, 0, 0}, {0, 0, 1}, FixedPlane{}, linear_spring(k, 0.0, 0.0, 0.0, 0.0)});
+    sys.compute_forces();
+    return sys;
+  };
+  BreakageParams rigid, alike;
+  alike.wall_as_grain = true;
+  const BreakageState sr = start_breakage(rigid, 3, on_wall(1.0).particles());
+  const BreakageState sa = start_breakage(alike, 3, on_wall(1.0).particles());
+  ASSERT_EQ(sr.strength[0], sa.strength[0]);  // the flag changes E' only, not the grain
+  const double f_rigid = critical_force(sr.strength[0], r, effective_modulus(m.youngs_modulus, m.poisson_ratio,
+                                                                             std::numeric_limits<double>::infinity(), 0));
+  const double f_alike = critical_force(sr.strength[0], r, effective_modulus(m.youngs_modulus, m.poisson_ratio,
+                                                                             m.youngs_modulus, m.poisson_ratio));
+  EXPECT_NEAR(f_alike / f_rigid, 4.0, 1e-12);  // F_crit ~ E'^-2 and E' halves
+  ASSERT_LT(f_alike / k, 0.1 * r);
+  // 1e-6 relative on either side of each threshold: far above the overlap's round-off.
+  struct Case {
+    double force;
+    bool rigid_breaks, alike_breaks;
+  };
+  for (const Case c : {Case{f_rigid * (1 - 1e-6), false, false}, Case{f_rigid * (1 + 1e-6), true, false},
+                       Case{f_alike * (1 - 1e-6), true, false}, Case{f_alike * (1 + 1e-6), true, true}}) {
+    const DemSystem sys = on_wall(c.force);
+    EXPECT_EQ(!find_breaks(sys, sr).empty(), c.rigid_breaks) << c.force / f_rigid;
+    EXPECT_EQ(!find_breaks(sys, sa).empty(), c.alike_breaks) << c.force / f_rigid;
+  }
 }
 
 // A central grain (r = 1 mm) touched by `n` small grains (r = 0.1 mm) at the vertices of a

@@ -97,7 +97,8 @@ std::vector<BreakEvent> find_breaks(const DemSystem& sys, const BreakageState& s
   const std::size_t n = p.size(), n_mat = mat.size();
   std::vector<double> e_pair(n_mat * n_mat), c_pair(n_mat * n_mat), e_wall(n_mat);
   for (std::size_t a = 0; a < n_mat; ++a) {
-    e_wall[a] = effective_modulus(mat[a].youngs_modulus, mat[a].poisson_ratio, std::numeric_limits<double>::infinity(), 0.0);
+    const double wall_e = s.params.wall_as_grain ? mat[a].youngs_modulus : std::numeric_limits<double>::infinity();
+    e_wall[a] = effective_modulus(mat[a].youngs_modulus, mat[a].poisson_ratio, wall_e, s.params.wall_as_grain ? mat[a].poisson_ratio : 0.0);
     for (std::size_t b = 0; b < n_mat; ++b) {
       const double e = effective_modulus(mat[a].youngs_modulus, mat[a].poisson_ratio, mat[b].youngs_modulus,
                                          mat[b].poisson_ratio);

@@ -35,6 +35,11 @@ struct BreakageParams {
   /// least as well as a neighbour does; PFC3D 5.0 (the dissertation's code), as far as we know,
   /// counts ball-facet contacts in a ball's contact count unless told to filter them.
   bool count_wall_contacts = true;
+  /// Eq. 5.13 at a wall contact: false (default) takes the grain on a rigid plane, r' = r and
+  /// E' = E/(1 - nu^2); true takes E' of two alike grains, E/(2(1 - nu^2)) (the single-material
+  /// formula, with r' = r still), which makes F_crit four times larger there. The text's walls
+  /// are linear springs with no modulus, so it leaves this open (targets.md 5d).
+  bool wall_as_grain = false;
   double comminution_factor = 0.22;  ///< grains below this x d50 never break (Sec. 5.2.3)
   double fines_fractal_dimension = 2.6;  ///< alpha of the lost mass, Eq. 5.16
   double fines_d_min = 7.5e-6;       ///< m, d_min of Eq. 5.16 (Wang et al. 2018)

@@ -118,6 +118,7 @@ dem::DemSpecimenParams read_dem_specimen(JsonReader& r, const std::string& base_
     b.var_b = r.number(p + "var_b");
     b.coordination_limit = r.integer(p + "coordination_limit");
     b.count_wall_contacts = r.boolean(p + "count_wall_contacts");
+    b.wall_as_grain = r.boolean(p + "wall_as_grain");
     b.comminution_factor = r.number(p + "comminution_factor");
     b.fines_fractal_dimension = r.number(p + "fines_fractal_dimension");
     b.fines_d_min = r.number(p + "fines_d_min");

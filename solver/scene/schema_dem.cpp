@@ -123,6 +123,10 @@ void add_breakage_rows(TableBuilder& s, const std::string& dem) {
   s.add(VT::boolean, p + "count_wall_contacts", b.count_wall_contacts, "-", kNoRange,
         "Wall contacts count towards the coordination number (the text leaves it open; "
         "docs/breakage.md)", dem);
+  s.add(VT::boolean, p + "wall_as_grain", b.wall_as_grain, "-", kNoRange,
+        "Eq. 5.13 at a wall contact takes E' of two alike grains, E/(2(1 - nu^2)), instead of the "
+        "grain on a rigid plane, E/(1 - nu^2): F_crit four times larger (the text leaves it open; "
+        "docs/breakage.md)", dem);
   s.add(VT::number, p + "comminution_factor", b.comminution_factor, "-", kOpenUnit,
         "Grains below this x d50 of the initial grains never break (Sec. 5.2.3: 0.22)", dem);
   s.add(VT::number, p + "fines_fractal_dimension", b.fines_fractal_dimension, "-", kPositive,
