@@ -204,11 +204,15 @@ void wang_study(Study& s) {
   }
   md += "### sigma_lim0 back-calculated against N = " + fmt("%g", n_ref) + " (Sec. 5.3.4, Fig. 5.16)\n\n";
   md += "| N | Eq. 5.17 | back-calculated | / Eq. 5.17 | bracket | RMS stress difference | runs |\n|---|---|---|---|---|---|---|\n";
+  // The other N first, while the first N's chain is still running; then join it.
+  std::vector<std::pair<BackCalcSettings, BackCalcResult>> backcalcs(backcalc_n.size());
+  for (std::size_t k = 1; k < backcalc_n.size(); ++k) backcalcs[k] = backcalc_at(backcalc_n[k].get<double>());
+  if (first_backcalc.valid()) backcalcs[0] = first_backcalc.get();
   std::vector<double> bn, bs;
   std::vector<CaseResult> best;
-  for (const auto& jn : backcalc_n) {
-    const double n = jn.get<double>();
-    const auto [bc, r] = bn.empty() ? first_backcalc.get() : backcalc_at(n);
+  for (std::size_t k = 0; k < backcalc_n.size(); ++k) {
+    const double n = backcalc_n[k].get<double>();
+    const auto& [bc, r] = backcalcs[k];
     md += fmt("| %g | %.3f GPa | %.3f GPa | %.3f | %.3f-%.3f GPa%s | %.2f MPa | %zu |\n", n, bc.guess / 1e9, r.sigma / 1e9,
               r.sigma / bc.guess, r.bracket_lo / 1e9, r.bracket_hi / 1e9, r.converged ? "" : " (not converged)", r.score / 1e6,
               r.evaluated.size());
