@@ -24,7 +24,7 @@ help:
 	@echo "  make reproduce-<set>   one set: $(SETS)"
 	@echo "  make reproduce-chapter2  Chapter 2 (EOS back-calculation, equilibrium, water content; ~5 min)"
 	@echo "  make reproduce-chapter4  Chapter 4 DEM SHPB, N = 2: 4 runs, the k calibration, upscaling and seed studies (~21 min from scratch on two threads; see reproductions/chapter4/README.md)"
-	@echo "  make reproduce-chapter5  Chapter 5 DEM with breakage: Wang, Huang, Song, sigma_lim0(N) back-calculation (hours at full scale; see reproductions/chapter5/README.md)"
+	@echo "  make reproduce-chapter5  Chapter 5 DEM with breakage: Wang, Huang, Song, sigma_lim0(N) back-calculation (48 min on two cores from scratch; see reproductions/chapter5/README.md)"
 	@echo "  make reproduce-chapter3  Chapter 3 coupled FE-DEM SHPB, N = 3: grain-size cases, friction, model levels, NORMK back-calculation (~8 min on one core; see reproductions/chapter3/README.md)"
 	@echo "  make rebaseline SET=<set> REASON=\"...\" [SCALE=smoke|full] [RUNS=n]"
 	@echo "                     rewrite reproductions/<set>/baseline_<scale>.json, log it in reproductions/BASELINES.md"
