@@ -19,9 +19,13 @@ if [ ! -x "$driver" ]; then echo "rebaseline: no driver $driver (sets: $(ls "$bu
 # report that never fails on a move.
 # A set without a scene file (verification: its checks build their inputs in code) has nothing
 # to perturb, so it gets none.
-scene="$(dirname "$0")/../reproductions/$set_name/scene_$scale.json"
+# A set's scenes are scene_<scale>.json or scene_<test>.json (chapter5: scene_wang.json, ...).
 if [ -z "$runs" ]; then
-  if [ "$scale" = smoke ] && [ -f "$scene" ]; then runs=8; else runs=0; fi
+  if [ "$scale" = smoke ] && compgen -G "$(dirname "$0")/../reproductions/$set_name/scene_*.json" > /dev/null; then
+    runs=8
+  else
+    runs=0
+  fi
 fi
 commit=$(git describe --always --dirty --abbrev=12 2>/dev/null || echo unknown)
 work="$build/rebaseline/$set_name/$scale"
