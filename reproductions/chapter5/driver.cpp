@@ -11,10 +11,12 @@
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
-#include <filesystem>
 #include <exception>
+#include <filesystem>
+#include <initializer_list>
 #include <string>
 #include <thread>
+#include <utility>
 
 #include "chapter5/studies.hpp"
 #include "common/driver_args.hpp"
@@ -66,21 +68,17 @@ int main(int argc, char** argv) {
   };
   Part wang{s, {}, {}, nullptr}, others{s, {}, {}, nullptr};
   for (Part* p : {&wang, &others}) p->s.m = &p->m, p->s.plots = &p->plots;
-  const auto run_wang = [&] {
+  using StudyFn = void (*)(ch5::Study&);
+  const auto run_part = [](Part& p, std::initializer_list<std::pair<const char*, StudyFn>> studies) {
     try {
-      if (wanted("wang")) ch5::wang_study(wang.s);
+      for (const auto& [name, study] : studies)
+        if (wanted(name)) study(p.s);
     } catch (...) {
-      wang.error = std::current_exception();
+      p.error = std::current_exception();
     }
   };
-  const auto run_others = [&] {
-    try {
-      if (wanted("huang")) ch5::huang_study(others.s);
-      if (wanted("song")) ch5::song_study(others.s);
-    } catch (...) {
-      others.error = std::current_exception();
-    }
-  };
+  const auto run_wang = [&] { run_part(wang, {{"wang", ch5::wang_study}}); };
+  const auto run_others = [&] { run_part(others, {{"huang", ch5::huang_study}, {"song", ch5::song_study}}); };
   const char* serial = std::getenv("KOLSKY_CH5_SERIAL");
   if (serial && std::string(serial) == "1") {
     run_wang();

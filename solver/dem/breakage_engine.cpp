@@ -97,14 +97,16 @@ std::vector<BreakEvent> find_breaks(const DemSystem& sys, const BreakageState& s
   const std::size_t n = p.size(), n_mat = mat.size();
   std::vector<double> e_pair(n_mat * n_mat), c_pair(n_mat * n_mat), e_wall(n_mat);
   for (std::size_t a = 0; a < n_mat; ++a) {
-    const double wall_e = s.params.wall_as_grain ? mat[a].youngs_modulus : std::numeric_limits<double>::infinity();
-    e_wall[a] = effective_modulus(mat[a].youngs_modulus, mat[a].poisson_ratio, wall_e, s.params.wall_as_grain ? mat[a].poisson_ratio : 0.0);
     for (std::size_t b = 0; b < n_mat; ++b) {
       const double e = effective_modulus(mat[a].youngs_modulus, mat[a].poisson_ratio, mat[b].youngs_modulus,
                                          mat[b].poisson_ratio);
       e_pair[a * n_mat + b] = e;
       c_pair[a * n_mat + b] = std::pow(4.0 * e / (3.0 * std::numbers::pi), 2);
     }
+    // wall_as_grain: the wall as a grain of the same material (E' of the alike pair).
+    e_wall[a] = s.params.wall_as_grain ? e_pair[a * n_mat + a]
+                                       : effective_modulus(mat[a].youngs_modulus, mat[a].poisson_ratio,
+                                                           std::numeric_limits<double>::infinity(), 0.0);
   }
   std::vector<double> inv_r(n), inv_s2(n), ratio(n, 0.0), largest2(n, 0.0);
   for (std::size_t i = 0; i < n; ++i) {
