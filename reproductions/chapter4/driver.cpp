@@ -99,6 +99,14 @@ int main(int argc, char** argv) {
     override_note = "**Diagnostic run: specimen porosity overridden to " + std::string(env) +
                     " by KOLSKY_CH4_POROSITY (the text's is 0.44).**\n\n";
   }
+  // KOLSKY_CH4_RELAX_TO_REST=1: the specimen relaxed to rest under the run's law before the
+  // run (specimen.relax_to_rest; README, "A specimen at rest"), a diagnostic until the
+  // preparation study settles the chapter's default.
+  if (const char* env = std::getenv("KOLSKY_CH4_RELAX_TO_REST"); env && std::string(env) == "1") {
+    scene_json["specimen"]["relax_to_rest"] = true;
+    override_note += "**Diagnostic run: the specimen relaxed to rest before the run "
+                     "(KOLSKY_CH4_RELAX_TO_REST=1; the chapter's scenes do not).**\n\n";
+  }
 
   // Packing (timed here, through the cache the cases then hit).
   const auto t_pack0 = std::chrono::steady_clock::now();

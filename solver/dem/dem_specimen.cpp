@@ -24,7 +24,8 @@ Particles checked(Particles p, const SpecimenWalls& w) {
 }  // namespace
 
 DemSpecimen::DemSpecimen(Particles particles, std::vector<Material> materials, ContactLaw law,
-                         const SpecimenWalls& walls, DemOptions options)
+                         const SpecimenWalls& walls, DemOptions options,
+                         const ContactHistory& history)
     : walls_(walls),
       sys_(checked(std::move(particles), walls), std::move(materials), std::move(law), options) {
   front_ = sys_.add_plane(PlaneWall{{0, 0, 0}, {0, 0, 1}, DrivenPlane{}, walls.end_law});
@@ -34,6 +35,7 @@ DemSpecimen::DemSpecimen(Particles particles, std::vector<Material> materials, C
   tube.compliance = walls.tube_compliance;
   tube.law = walls.tube_law;
   sys_.add_cylinder(tube);
+  if (!history.empty()) sys_.seed_contact_history(history);
   sys_.compute_forces();
   elastic_0_ = sys_.energy().elastic;
   held_ = walls.hold_until_loaded;

@@ -11,6 +11,7 @@
 #include "core/specimen_coupling.hpp"
 #include "dem/breakage_engine.hpp"
 #include "dem/dem_system.hpp"
+#include "dem/rest_relaxation.hpp"
 
 namespace kolsky::dem {
 
@@ -41,8 +42,12 @@ class DemSpecimen {
  public:
   /// Grains must have their centres inside the tube and between z = 0 and z = L. Throws
   /// kolsky::InputError otherwise (or for any invalid DemSystem input).
+  /// `history`: tangential histories of the grains' contacts (a preparation's end state,
+  /// rest_relaxation.hpp), keyed to the walls in the order this constructor adds them (front
+  /// plane, back plane, tube); empty: every contact starts without one.
   DemSpecimen(Particles particles, std::vector<Material> materials, ContactLaw law,
-              const SpecimenWalls& walls, DemOptions options = {});
+              const SpecimenWalls& walls, DemOptions options = {},
+              const ContactHistory& history = {});
 
   double area() const;  ///< pi R^2, m^2
   double length() const { return walls_.length; }
@@ -93,6 +98,11 @@ class DemSpecimen {
   int front_plane() const { return front_; }
   int back_plane() const { return back_; }
 
+  /// The preparation's relaxation to rest (make_dem_specimen with DemSpecimenParams::rest);
+  /// none: the run starts from the packing as it was.
+  const std::optional<RestRelaxationOutcome>& rest_relaxation() const { return rest_; }
+  void set_rest_relaxation(const RestRelaxationOutcome& o) { rest_ = o; }
+
   /// Wall forces of the initial state (front, back), N: the preload when preload_on_supports.
   FaceForces initial_forces() const { return forces_0_; }
 
@@ -120,6 +130,7 @@ class DemSpecimen {
   double check_period_ = 0;       // s; 0: every check_interval_ steps
   double time_since_check_ = 0;   // s, advanced by advance(dt)
   bool breaks_done_ = false;  // apply_due_breaks ran for the step advance() is about to take
+  std::optional<RestRelaxationOutcome> rest_;
 };
 
 }  // namespace kolsky::dem

@@ -24,6 +24,7 @@ InputError rename_input_error(const InputError& e, const std::vector<InputName>&
 
 DemSpecimen make_dem_specimen(const DemSpecimenParams& p) {
   try {
+    if (p.rest) validate(*p.rest);  // before minutes of packing
     PackingResult packed = cached_packing(p.packing, p.packing_cache).result;
     SpecimenWalls walls = p.walls;
     walls.length = p.packing.length;
@@ -42,8 +43,25 @@ DemSpecimen make_dem_specimen(const DemSpecimenParams& p) {
         options.smallest_radius_to_come = smallest_radius_to_come(*p.breakage, packed.particles);
     }
     const std::uint64_t seed = p.packing.seed;
+    ContactHistory history;
+    std::optional<RestRelaxationOutcome> rest;
+    if (p.rest) {
+      // The grains relax in a specimen like the run's (same laws, walls and rolling), held by
+      // nothing, with its step on the grains present (no daughters yet); the run then starts
+      // from their positions with their contact histories.
+      DemOptions prep_options = p.options;
+      prep_options.smallest_radius_to_come = 0.0;
+      SpecimenWalls prep_walls = walls;
+      prep_walls.hold_until_loaded = false;
+      DemSpecimen prep(std::move(packed.particles), materials,
+                       make_contact_law(materials, p.contact), prep_walls, prep_options);
+      rest = relax_to_rest(prep.coupled_system(), *p.rest);
+      packed.particles = prep.system().particles();
+      history = prep.system().contact_history();
+    }
     DemSpecimen specimen(std::move(packed.particles), materials, make_contact_law(materials, p.contact), walls,
-                         options);
+                         options, history);
+    if (rest) specimen.set_rest_relaxation(*rest);
     if (p.breakage)
       specimen.enable_breakage(*p.breakage, seed, p.breakage_check_interval, p.breakage_check_period);
     return specimen;

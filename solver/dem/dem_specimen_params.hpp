@@ -50,6 +50,11 @@ struct DemSpecimenParams {
   /// dt (time_loop::refine; the strain-rate walls with time.dt = 0): its step then follows
   /// the smallest grain actually present (docs/breakage.md, "Time step").
   bool step_for_daughters_up_front = true;
+  /// The preparation's last stage (rest_relaxation.hpp; docs/dem.md, "A specimen at rest"):
+  /// the packed grains relax to rest between the fixed walls under the run's own laws, and the
+  /// run starts from that state with its contact histories. None: the run starts from the
+  /// packing's positions with no tangential history (what every scene did before).
+  std::optional<RestRelaxationParams> rest;
   std::vector<InputName> input_names;  ///< for errors while building (empty: physics names)
 };
 

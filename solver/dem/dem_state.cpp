@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 #include <string>
 
 #include "core/errors.hpp"
@@ -39,24 +40,7 @@ DemState DemSystem::save_state() const {
   s.removed_dissipated = removed_dissipated_;
   s.edited_energy = edited_energy_;
   s.added_since_sort = added_since_sort_;
-  if (pairs_.first.size() == p_.size() + 1) {  // else no list yet (or edited particles)
-    for (std::size_t k = 0; k < pairs_.size(); ++k) {
-      if (!stored(pairs_.history[k])) continue;
-      s.pair_i.push_back(pairs_.i[k]);
-      s.pair_j.push_back(pairs_.j[k]);
-      s.pair_history.push_back(pairs_.history[k]);
-    }
-  }
-  const auto n_slots = static_cast<std::size_t>(WallSlots{n_planes(), n_cylinders()}.count());
-  if (wall_first_.size() == n_slots + 1) {
-    for (std::size_t w = 0; w < n_slots; ++w)
-      for (int c = wall_first_[w]; c < wall_first_[w + 1]; ++c) {
-        if (!stored(wall_history_[c])) continue;
-        s.wall_slot.push_back(static_cast<int>(w));
-        s.wall_particle.push_back(wall_particle_[c]);
-        s.wall_history.push_back(wall_history_[c]);
-      }
-  }
+  static_cast<ContactHistory&>(s) = contact_history();
   for (const auto& p : planes_)
     s.planes.push_back({p.offset, p.speed, p.force, p.offset_at_force, p.work});
   for (const auto& t : tubes_) s.tubes.push_back({t.u, t.u_dot, t.force});
@@ -77,26 +61,7 @@ void DemSystem::restore_state(const DemState& s) {
     for (std::size_t k = 1; ok && k < b.size(); ++k) ok = b[k] > b[k - 1];
     if (!ok) bad_state("owner blocks must rise strictly from 0 to the particle count");
   }
-  const std::size_t n_pairs = s.pair_i.size();
-  if (s.pair_j.size() != n_pairs || s.pair_history.size() != n_pairs)
-    bad_state("pair histories: i, j and history differ in length");
-  for (std::size_t k = 0; k < n_pairs; ++k) {
-    const int i = s.pair_i[k], j = s.pair_j[k];
-    const bool ordered = k == 0 || i > s.pair_i[k - 1] || (i == s.pair_i[k - 1] && j > s.pair_j[k - 1]);
-    if (!(i >= 0 && i < j && j < static_cast<int>(n) && ordered))
-      bad_state("pair histories must be sorted pairs i < j of existing particles");
-  }
-  const auto n_slots = static_cast<std::size_t>(WallSlots{n_planes(), n_cylinders()}.count());
-  const std::size_t n_wall = s.wall_slot.size();
-  if (s.wall_particle.size() != n_wall || s.wall_history.size() != n_wall)
-    bad_state("wall histories: slot, particle and history differ in length");
-  for (std::size_t c = 0; c < n_wall; ++c) {
-    const int w = s.wall_slot[c], q = s.wall_particle[c];
-    const bool ordered = c == 0 || w > s.wall_slot[c - 1] ||
-                         (w == s.wall_slot[c - 1] && q > s.wall_particle[c - 1]);
-    if (!(w >= 0 && w < static_cast<int>(n_slots) && q >= 0 && q < static_cast<int>(n) && ordered))
-      bad_state("wall histories must be sorted by (wall, particle) and name existing ones");
-  }
+  check_contact_history(s, n);
 
   p_ = s.particles;
   dissipated_ = s.dissipated;
@@ -127,6 +92,58 @@ void DemSystem::restore_state(const DemState& s) {
     tubes_[k].force = s.tubes[k].force;
   }
 
+  attach_contact_history(s);
+}
+
+ContactHistory DemSystem::contact_history() const {
+  ContactHistory h;
+  if (pairs_.first.size() == p_.size() + 1) {  // else no list yet (or edited particles)
+    for (std::size_t k = 0; k < pairs_.size(); ++k) {
+      if (!stored(pairs_.history[k])) continue;
+      h.pair_i.push_back(pairs_.i[k]);
+      h.pair_j.push_back(pairs_.j[k]);
+      h.pair_history.push_back(pairs_.history[k]);
+    }
+  }
+  const auto n_slots = static_cast<std::size_t>(WallSlots{n_planes(), n_cylinders()}.count());
+  if (wall_first_.size() == n_slots + 1) {
+    for (std::size_t w = 0; w < n_slots; ++w)
+      for (int c = wall_first_[w]; c < wall_first_[w + 1]; ++c) {
+        if (!stored(wall_history_[c])) continue;
+        h.wall_slot.push_back(static_cast<int>(w));
+        h.wall_particle.push_back(wall_particle_[c]);
+        h.wall_history.push_back(wall_history_[c]);
+      }
+  }
+  return h;
+}
+
+void DemSystem::check_contact_history(const ContactHistory& s, std::size_t n) const {
+  const std::size_t n_pairs = s.pair_i.size();
+  if (s.pair_j.size() != n_pairs || s.pair_history.size() != n_pairs)
+    bad_state("pair histories: i, j and history differ in length");
+  for (std::size_t k = 0; k < n_pairs; ++k) {
+    const int i = s.pair_i[k], j = s.pair_j[k];
+    const bool ordered = k == 0 || i > s.pair_i[k - 1] || (i == s.pair_i[k - 1] && j > s.pair_j[k - 1]);
+    if (!(i >= 0 && i < j && j < static_cast<int>(n) && ordered))
+      bad_state("pair histories must be sorted pairs i < j of existing particles");
+  }
+  const auto n_slots = static_cast<std::size_t>(WallSlots{n_planes(), n_cylinders()}.count());
+  const std::size_t n_wall = s.wall_slot.size();
+  if (s.wall_particle.size() != n_wall || s.wall_history.size() != n_wall)
+    bad_state("wall histories: slot, particle and history differ in length");
+  for (std::size_t c = 0; c < n_wall; ++c) {
+    const int w = s.wall_slot[c], q = s.wall_particle[c];
+    const bool ordered = c == 0 || w > s.wall_slot[c - 1] ||
+                         (w == s.wall_slot[c - 1] && q > s.wall_particle[c - 1]);
+    if (!(w >= 0 && w < static_cast<int>(n_slots) && q >= 0 && q < static_cast<int>(n) && ordered))
+      bad_state("wall histories must be sorted by (wall, particle) and name existing ones");
+  }
+}
+
+void DemSystem::attach_contact_history(const ContactHistory& s) {
+  const std::size_t n = p_.size();
+  const auto n_slots = static_cast<std::size_t>(WallSlots{n_planes(), n_cylinders()}.count());
   // The histories become the "previous" lists of the next rebuild, which carries them by key.
   PairList old;
   old.first.assign(n + 1, 0);
@@ -146,6 +163,13 @@ void DemSystem::restore_state(const DemState& s) {
   wall_normal_.assign(wall_particle_.size(), 0.0);
   list_valid_ = false;  // rebuilt (with the carry above) at the next force evaluation
   max_disp2_ = 0;
+}
+
+void DemSystem::seed_contact_history(const ContactHistory& h) {
+  if (pending_dt_ > 0) throw std::logic_error("DemSystem::seed_contact_history inside a step");
+  check_contact_history(h, p_.size());
+  attach_contact_history(h);
+  forces_valid_ = false;
 }
 
 DemSpecimenState DemSpecimen::save_state() const {

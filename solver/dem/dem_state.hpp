@@ -20,12 +20,14 @@
 #include <vector>
 
 #include "core/specimen_coupling.hpp"
+#include "dem/contact_history.hpp"
 #include "dem/particles.hpp"
 #include "dem/vec3.hpp"
 
 namespace kolsky::dem {
 
-struct DemState {
+/// The tangential histories of pair and wall contacts are the ContactHistory part.
+struct DemState : ContactHistory {
   Particles particles;              ///< every field: x, v, omega, f, torque, radius, mass, ...
   std::vector<double> dissipated;   ///< per particle, J
   double time = 0;                  ///< s
@@ -38,14 +40,6 @@ struct DemState {
   double removed_dissipated = 0;    ///< dissipation of grains edits removed, J
   double edited_energy = 0;         ///< DemEnergy::edited, J
   std::size_t added_since_sort = 0; ///< grains edits added since the last locality sort
-
-  // Tangential histories of pairs (i < j) with a non-zero history, sorted by (i, j).
-  std::vector<int> pair_i, pair_j;
-  std::vector<Vec3> pair_history;
-  // Tangential histories of wall contacts with a non-zero history: wall slot (planes first,
-  // then cylinders), particle, sorted by (slot, particle).
-  std::vector<int> wall_slot, wall_particle;
-  std::vector<Vec3> wall_history;
 
   struct Plane {
     double offset = 0, speed = 0, force = 0, offset_at_force = 0, work = 0;

@@ -6,10 +6,12 @@
 // for any OpenMP thread count. Stable dt = safety x min(Rayleigh step of the smallest grain,
 // sqrt(m/k) of the stiffest linear contact, tube ring mode). Details: docs/dem.md.
 #pragma once
+#include <algorithm>
 #include <cstddef>
 #include <optional>
 #include <vector>
 
+#include "dem/contact_history.hpp"
 #include "dem/contact_law.hpp"
 #include "dem/neighbour_list.hpp"
 #include "dem/particles.hpp"
@@ -183,6 +185,14 @@ class DemSystem {
   const std::vector<int>& block_first() const { return block_first_; }
   /// How many locality re-sorts (DemOptions::resort_added_fraction) edits have triggered.
   std::size_t n_resorts() const { return n_resorts_; }
+  /// Sets every grain's velocity and spin (and a compliant tube's radial speed) to zero
+  /// between two steps, keeping the forces and lists (velocities enter neither the list nor
+  /// the elastic forces): the kinetic damping of rest_relaxation.hpp.
+  void stop_grains() {
+    std::fill(p_.v.begin(), p_.v.end(), Vec3{});
+    std::fill(p_.omega.begin(), p_.omega.end(), Vec3{});
+    for (TubeState& t : tubes_) t.u_dot = 0;
+  }
   const std::vector<Material>& materials() const { return materials_; }
   double time() const { return time_; }
 
@@ -222,6 +232,14 @@ class DemSystem {
   /// ("dem.state") when the walls disagree. The continued run is bitwise the uninterrupted one.
   DemState save_state() const;
   void restore_state(const DemState& s);
+  /// The tangential histories of the last force evaluation's contacts (dem_state.cpp).
+  ContactHistory contact_history() const;
+  /// Gives the contacts of the current particles these histories (a preparation's final
+  /// state handed to the run; contact_history.hpp): the next force evaluation rebuilds the
+  /// lists and attaches each history by key, as after restore_state. Call it after the walls
+  /// are added (their slots key the wall histories). Throws kolsky::InputError ("dem.state")
+  /// for histories that name no particle or wall of the system, std::logic_error inside a step.
+  void seed_contact_history(const ContactHistory& h);
 
  private:
   // Loops shorter than this run on one thread: a parallel region costs microseconds, which
@@ -324,6 +342,8 @@ class DemSystem {
   void kick_retard(double half_dt, double dt);  // finish_step: half kick, then retardation
   void kick_tubes(double half_dt);              // the compliant tubes' half kick
   int threads_for_step();                       // the governor's count (or the caller's)
+  void check_contact_history(const ContactHistory& h, std::size_t n_particles) const;
+  void attach_contact_history(const ContactHistory& h);  // the carry of restore / seed
   bool needs_rebuild() const;
   void rebuild();
   void build_wall_candidates();

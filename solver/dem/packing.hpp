@@ -23,6 +23,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <functional>
+#include <utility>
 
 #include "dem/particles.hpp"
 #include "psd/grain_size_curve.hpp"
@@ -139,5 +140,11 @@ void prestress_result(PackingResult& res, const PackingParams& in);
 /// Largest overlap of grain pairs (brute force over a cell grid) and with the cylinder of
 /// diameter D around the z axis and the planes z = 0 and z = L, in m.
 double max_packing_overlap(const Particles& p, double diameter, double length);
+
+/// The load-bearing network of grains in that cylinder: (contacts including walls per grain
+/// after removing, repeatedly, grains with fewer than 2 contacts; fraction of grains removed
+/// as rattlers). A contact is a geometric overlap (PackingResult::coordination_no_rattlers).
+std::pair<double, double> coordination_without_rattlers(const Particles& p, double diameter,
+                                                        double length);
 
 }  // namespace kolsky::dem

@@ -130,6 +130,11 @@ std::pair<double, double> without_rattlers(const Particles& p, double diameter, 
 
 }  // namespace
 
+std::pair<double, double> coordination_without_rattlers(const Particles& p, double diameter,
+                                                        double length) {
+  return without_rattlers(p, diameter, length);
+}
+
 // Census of the final state: coordination (with and without walls and rattlers), largest
 // overlap, and the contact-virial mean stress the grains would carry with Hertz contacts
 // (rigid Hertz walls), the law of the SHPB runs (Sec. 4.3); then the grains are put at rest

@@ -98,6 +98,7 @@ std::vector<dem::InputName> dem_input_names(const dem::ContactLawParams& law) {
       {"dem.packing.prestress_friction", "specimen.grain_friction"},
       {"dem.packing.prestress_wall_normal_stiffness", "specimen.wall_normal_stiffness"},
       {"dem.packing.prestress_wall_shear_stiffness", "specimen.wall_shear_stiffness"},
+      {"dem.rest", "specimen.relax_to_rest"},
       {"dem.dt", "time.dt"}};
   std::visit([&](const auto& p) { add_names(n, law_keys(p), "dem.contact_law"); }, law);
   add_names(n, wall_keys(), "dem.walls.plane.law");

@@ -80,6 +80,7 @@ dem::DemSpecimenParams read_dem_specimen(JsonReader& r, const std::string& base_
   d.walls.hold_until_loaded = r.boolean("specimen.hold_until_loaded");
   d.walls.preload_on_supports = r.boolean("specimen.preload_on_supports");
   d.packing.initial_stress = r.number("specimen.initial_stress");
+  if (r.boolean("specimen.relax_to_rest")) d.rest = dem::RestRelaxationParams{};
   const double g = r.number("specimen.grain_shear_modulus");
   const double nu = r.number("specimen.grain_poisson_ratio");
   d.packing.material = dem::Material{2.0 * g * (1.0 + nu), nu, r.number("specimen.grain_density")};

@@ -63,6 +63,13 @@ void add_dem_rows(TableBuilder& s) {
         kNoRange,
         "Hold the grains as packed (no DEM step) until a face moves into the specimen (docs/dem.md)",
         dem);
+  s.add(VT::boolean, "specimen.relax_to_rest", false, "-", kNoRange,
+        "End the preparation with the grains relaxed to rest between the fixed walls under the "
+        "run's own grain law, rolling and wall laws (kinetic damping), and start the run from "
+        "that state with its contacts' tangential histories; off: the run starts from the "
+        "packing's positions with no tangential history, and a frictional network may fall "
+        "apart at rest (docs/dem.md, A specimen at rest)",
+        dem);
   s.add(VT::number, "specimen.initial_stress", pack.initial_stress, "Pa", kNonNegative,
         "Isotropic mean stress the packed grains are pre-stressed to before the test (0: none; "
         "hertz_mindlin grains only; docs/dem.md, Pre-stress)",
