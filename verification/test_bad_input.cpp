@@ -54,6 +54,25 @@ TEST(BadInput, DuplicateKeysAreRefusedNamingTheKey) {
   EXPECT_EQ(input_error([&] { scene::read_json_file(in_array); }).path(), "a[1].k");
 }
 
+// A scene nested 100,000 arrays deep used to end in "internal error: std::bad_alloc" (exit 1):
+// the parser's key paths grew with the depth. Refused at kMaxJsonDepth, naming the file.
+TEST(BadInput, DeeplyNestedDocumentsAreRefusedNamingTheFile) {
+  const testing::TempDir dir;
+  const std::string deep = write(dir, "deep.json", std::string(100000, '[') + std::string(100000, ']'));
+  InputError e = input_error([&] { scene::read_json_file(deep); });
+  EXPECT_EQ(e.file(), deep);
+  EXPECT_NE(e.rule().find("nested more than 64 levels"), std::string::npos) << e.what();
+  const std::string objects = write(dir, "objects.json", [] {
+    std::string t;
+    for (int k = 0; k < 65; ++k) t += "{\"a\": ";
+    return t + "1" + std::string(65, '}');
+  }());
+  EXPECT_NE(input_error([&] { scene::read_json_file(objects); }).rule().find("nested"), std::string::npos);
+  // 64 levels are still read.
+  const std::string ok = write(dir, "ok.json", std::string(64, '[') + std::string(64, ']'));
+  EXPECT_NO_THROW(scene::read_json_file(ok));
+}
+
 TEST(BadInput, NumbersBeyondTheDoubleRangeNameTheKey) {
   const testing::TempDir dir;
   const std::string scalar = write(dir, "s.json", R"({"time": {"end": 1e-3, "dt": 1e400}})");

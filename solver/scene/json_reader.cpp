@@ -88,8 +88,12 @@ namespace {
 /// the last of two equal keys without a word, and a scene that says a thing twice is refused.
 class PathTracker {
  public:
-  bool operator()(int /*depth*/, json::parse_event_t event, json& parsed) {
+  bool operator()(int depth, json::parse_event_t event, json& parsed) {
     using E = json::parse_event_t;
+    // Refused before the frames' paths grow: at 100,000 levels they took every byte of memory
+    // (std::bad_alloc); a scene is 3-4 levels deep.
+    if ((event == E::object_start || event == E::array_start) && depth >= kMaxJsonDepth)
+      throw TooDeep{};
     switch (event) {
       case E::object_start: stack_.push_back({false, child(), {}, {}, 0}); break;
       case E::array_start: stack_.push_back({true, child(), {}, {}, 0}); break;
@@ -118,6 +122,7 @@ class PathTracker {
   }
   const std::string& duplicate() const { return duplicate_; }
   struct DuplicateKey {};
+  struct TooDeep {};
 
  private:
   struct Frame {
@@ -155,6 +160,9 @@ json parse_json_text(std::string_view text, const std::string& path) {
     const std::string& key = tracker.duplicate();
     throw InputError(path, key, "duplicate key '" + last_segment(key) +
                                     "': an object holds each key once; remove one of them");
+  } catch (const PathTracker::TooDeep&) {
+    throw InputError(path, "", "arrays and objects nested more than " + std::to_string(kMaxJsonDepth) +
+                                   " levels deep (a scene needs 3 or 4)");
   } catch (const json::out_of_range& e) {  // 406: a number beyond the double range (1e400)
     const std::string what = e.what();
     const auto quote = what.find('\'');

@@ -14,8 +14,12 @@
 
 namespace kolsky::scene {
 
-/// Reads and parses a JSON file. Throws InputError(path, "", rule) if it cannot be opened or
-/// on a syntax error ("JSON syntax error at line L, column C: ...").
+/// Deepest nesting of arrays and objects a parsed document may have; deeper is refused.
+inline constexpr int kMaxJsonDepth = 64;
+
+/// Reads and parses a JSON file. Throws InputError(path, "", rule) if it cannot be opened, on
+/// a syntax error ("JSON syntax error at line L, column C: ...") or when nested deeper than
+/// kMaxJsonDepth.
 nlohmann::json read_json_file(const std::string& path);
 /// The same for a document already in memory (the fuzz targets); `path` names it in errors.
 nlohmann::json parse_json_text(std::string_view text, const std::string& path);
