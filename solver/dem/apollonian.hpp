@@ -41,9 +41,9 @@ inline constexpr std::array<Daughter, kApollonianCount> kApollonianTable{{
     {{-0.5146, 0.2971, -0.4456}, 0.2573} // #14
 }};
 
-/// sum over Table 5.3 of (r/R)^3 = 0.533781: the volume (mass) fraction the daughters keep.
+/// sum over Table 5.3 of (r/R)^3 = 0.533784: the volume (mass) fraction the daughters keep.
 double retained_volume_fraction();
-/// 1 - retained_volume_fraction() = 0.466219: the fraction that leaves as fines (the "47 %").
+/// 1 - retained_volume_fraction() = 0.466216: the fraction that leaves as fines (the "47 %").
 double lost_volume_fraction();
 /// Smallest r/R of Table 5.3 (0.2240, daughters #4-#6); 2 x this x R is d_max of Eq. 5.16.
 double smallest_daughter_ratio();

@@ -29,8 +29,9 @@ struct BreakageState {
   psd::GrainSizeCurve initial_curve;  ///< the grains as generated, on `sizes`
   std::vector<double> sizes;          ///< m, where the curves are tabulated (docs/breakage.md)
   /// Energy of the replacements (J; both also inside DemEnergy::edited): kinetic energy that
-  /// left with the lost 46.6 % of the mass, and the rest, the change of stored contact energy
-  /// when daughters replace a parent in its contacts (insertion; negative: energy released).
+  /// left with the lost 46.6 % of the mass, and the rest, the stored contact energy that the
+  /// replacement takes out of the assembly (insertion: the parents' contact energy minus the
+  /// daughters'; positive when energy is released, as DemEnergy::edited books what edits remove).
   double kinetic_removed = 0.0, insertion_energy = 0.0;
 };
 
