@@ -139,6 +139,41 @@ TEST(BreakageEngine, WallContactTakesTheRigidPlaneOrTheAlikeGrainModulus) {
   }
 }
 
+// A damped wall law: Eq. 5.13 tests the wall's elastic force, not elastic + dashpot (a held-out
+// check found a grain broken at 0.805 F_crit of elastic force while moving into a damped wall;
+// docs/breakage.md, "Which force").
+TEST(BreakageEngine, DampedWallContactTestsTheElasticForce) {
+  const double r = 3e-4, k = 1e9, zeta = 0.5;
+  const Material& m = kBusySand[0];
+  const double mass = sphere_mass(r, m.density);
+  const double c_n = 2.0 * zeta * std::sqrt(k * mass);  // CriticalDamping's coefficient
+  LinearParams wall{k, 0.0, 0.0, zeta};
+  // The grain's elastic wall force is `elastic`; it moves along z at `vz` (< 0: into the wall,
+  // the dashpot then adds c_n |vz| to the total).
+  const auto on_wall = [&](double elastic, double vz) {
+    Particles p;
+    p.add({0, 0, r - elastic / k}, r, 0, kBusySand);
+    p.v[0] = {0, 0, vz};
+    DemSystem sys(p, kBusySand, HertzMindlin(kBusySand, kHm));
+    sys.add_plane({{0, 0, 0}, {0, 0, 1}, FixedPlane{}, linear_spring(wall)});
+    sys.compute_forces();
+    return sys;
+  };
+  BreakageParams params;
+  const BreakageState st = start_breakage(params, 3, on_wall(1.0, 0.0).particles());
+  const double f_crit = critical_force(st.strength[0], r, effective_modulus(m.youngs_modulus, m.poisson_ratio,
+                                                                            std::numeric_limits<double>::infinity(), 0));
+  const double v = 0.4 * f_crit / c_n;  // a dashpot force of 0.4 F_crit
+  // Elastic 0.805 F_crit moving in: total 1.205 F_crit, but no break.
+  const DemSystem in = on_wall(0.805 * f_crit, -v);
+  EXPECT_NEAR(in.plane_force(0) / f_crit, 1.205, 1e-6);  // the wall still reports the total
+  EXPECT_TRUE(find_breaks(in, st).empty());
+  // Elastic 1.1 F_crit moving out: total 0.7 F_crit, and it breaks.
+  const DemSystem out = on_wall(1.1 * f_crit, v);
+  EXPECT_NEAR(out.plane_force(0) / f_crit, 0.7, 1e-6);
+  EXPECT_FALSE(find_breaks(out, st).empty());
+}
+
 // A central grain (r = 1 mm) touched by `n` small grains (r = 0.1 mm) at the vertices of a
 // cube (and the poles), all overlapping it by delta.
 DemSystem star(int n, double delta) {

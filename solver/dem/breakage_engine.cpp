@@ -136,7 +136,8 @@ std::vector<BreakEvent> find_breaks(const DemSystem& sys, const BreakageState& s
       },
       [&](int i, int, const Vec3& normal, double, double force) {
         // A wall: r' = the grain's radius (a plane), E' of the grain against a rigid wall, and the
-        // wall law's normal force (no Hertz overlap relation for a linear wall spring).
+        // wall law's elastic normal force (no Hertz overlap relation for a linear wall spring;
+        // without the dashpot, as for grain pairs: docs/breakage.md).
         const auto a = static_cast<std::size_t>(i);
         const double f_crit = critical_force(s.strength[a], p.radius[a], e_wall[static_cast<std::size_t>(p.material[a])]);
         ratio[a] = std::max(ratio[a], force / f_crit);

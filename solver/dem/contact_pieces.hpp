@@ -38,6 +38,7 @@ struct ContactResult {
   Vec3 force;                 ///< total contact force on i, N
   Vec3 rolling_torque;        ///< rolling-resistance moment on i (j gets the opposite), N m
   double normal_force = 0;    ///< normal force, repulsive positive, N
+  double elastic_normal_force = 0;  ///< its elastic part (no dashpot), N: what Eq. 5.13 tests
   double elastic_energy = 0;  ///< energy stored in the normal and tangential springs, J
   double dissipated = 0;      ///< energy dissipated over the last dt (dashpots, sliding), J
 };
@@ -187,6 +188,7 @@ struct RollingFriction {
                                                   double dt, ContactResult& out) {
   const double vn = dot(g.v_contact, g.normal);  // < 0 while approaching
   out.elastic_energy += el.energy;
+  out.elastic_normal_force = el.force;
   out.dissipated += c_n * vn * vn * dt;
   return el.force - c_n * vn;
 }

@@ -40,7 +40,7 @@ void DemSystem::for_each_touching_contact(Pair&& pair, Wall&& wall) const {
         normal = rho > 0 ? Vec3{dx / rho, dy / rho, 0} : Vec3{1, 0, 0};
         overlap = p_.radius[i] + rho - tube_radius_at(w, p_.x[i]);
       }
-      wall(i, s, normal, overlap, wall_normal_[c]);
+      wall(i, s, normal, overlap, wall_elastic_normal_[c]);
     }
   }
 }

@@ -170,18 +170,19 @@ void DemSystem::remap_contacts(const std::vector<int>& old_to_new, std::size_t n
       Vec3 history;
       ContactOut out;
       unsigned char active;
-      double normal;
+      double normal, elastic_normal;
     };
     std::vector<int> particle, first{0};
     std::vector<Vec3> history;
     std::vector<ContactOut> out;
     std::vector<unsigned char> active;
-    std::vector<double> normal;
+    std::vector<double> normal, elastic_normal;
     for (std::size_t w = 0; w < n_slots; ++w) {
       std::vector<Wall> slot;
       for (int c = wall_first_[w]; c < wall_first_[w + 1]; ++c) {
         const int q = old_to_new[wall_particle_[c]];
-        if (q >= 0) slot.push_back({q, wall_history_[c], wall_out_.out[c], wall_out_.active[c], wall_normal_[c]});
+        if (q >= 0) slot.push_back({q, wall_history_[c], wall_out_.out[c], wall_out_.active[c], wall_normal_[c],
+                                 wall_elastic_normal_[c]});
       }
       std::stable_sort(slot.begin(), slot.end(), [](const Wall& x, const Wall& y) { return x.particle < y.particle; });
       for (const Wall& c : slot) {
@@ -190,6 +191,7 @@ void DemSystem::remap_contacts(const std::vector<int>& old_to_new, std::size_t n
         out.push_back(c.out);
         active.push_back(c.active);
         normal.push_back(c.normal);
+        elastic_normal.push_back(c.elastic_normal);
       }
       first.push_back(static_cast<int>(particle.size()));
     }
@@ -200,6 +202,7 @@ void DemSystem::remap_contacts(const std::vector<int>& old_to_new, std::size_t n
     wall_out_.active.swap(active);
     wall_out_.elastic.assign(wall_particle_.size(), 0.0);  // pairs only; kept sized
     wall_normal_.swap(normal);
+    wall_elastic_normal_.swap(elastic_normal);
   }
   list_valid_ = false;  // slots, gather lists and x_at_build_ are rebuilt from the carried lists
   max_disp2_ = 0;

@@ -135,6 +135,7 @@ void DemSystem::plane_forces(const Law& law, int k, double dt) {
                      p_.mass[i], p_.v[i], p_.omega[i], wall_history_[c], dt, torque);
     out.out[c] = {r.force, torque, r.dissipated, r.elastic_energy};
     wall_normal_[c] = r.normal_force;
+    wall_elastic_normal_[c] = r.elastic_normal_force;
     out.active[c] = 1;
   }
 }
@@ -168,6 +169,7 @@ void DemSystem::tube_forces(const Law& law, int k, double dt) {
                      p_.v[i], p_.omega[i], wall_history_[c], dt, torque);
     out.out[c] = {res.force, torque, res.dissipated, res.elastic_energy};
     wall_normal_[c] = res.normal_force;
+    wall_elastic_normal_[c] = res.elastic_normal_force;
     out.active[c] = 1;
   }
 }

@@ -161,6 +161,7 @@ void DemSystem::attach_contact_history(const ContactHistory& s) {
   wall_history_ = s.wall_history;
   wall_out_.resize(wall_particle_.size(), wall_particle_.size());
   wall_normal_.assign(wall_particle_.size(), 0.0);
+  wall_elastic_normal_.assign(wall_particle_.size(), 0.0);
   list_valid_ = false;  // rebuilt (with the carry above) at the next force evaluation
   max_disp2_ = 0;
 }

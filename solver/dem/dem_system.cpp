@@ -383,6 +383,7 @@ void DemSystem::build_wall_candidates() {
   wall_history_.swap(history);
   wall_out_.resize(wall_particle_.size(), wall_particle_.size());
   wall_normal_.resize(wall_particle_.size());
+  wall_elastic_normal_.resize(wall_particle_.size());
 }
 
 DemEnergy DemSystem::energy() const {

@@ -112,7 +112,7 @@ struct TouchingContact {
   int wall_slot = -1;
   Vec3 normal;             ///< unit, from grain i towards the partner (or the wall)
   double overlap = 0;      ///< m, > 0
-  double wall_force = 0;   ///< normal force of a wall contact (N); 0 for a pair
+  double wall_force = 0;   ///< elastic normal force of a wall contact (N); 0 for a pair
 };
 
 class DemSystem {
@@ -213,7 +213,8 @@ class DemSystem {
   /// wall contacts (in slot, particle order): one serial pass over the contact flags the sweep
   /// wrote. Nothing between an edit or restore and the next evaluation. The visitor form
   /// (defined in dem_contacts.hpp) calls pair(i, j, x_j - x_i, |x_j - x_i|) and
-  /// wall(i, slot, unit normal towards the wall, overlap, normal force); the listing form
+  /// wall(i, slot, unit normal towards the wall, overlap, elastic normal force: the wall law's
+  /// spring without its dashpot, as a grain pair's Hertz force); the listing form
   /// builds TouchingContacts from it.
   template <class Pair, class Wall> void for_each_touching_contact(Pair&& pair, Wall&& wall) const;
   std::vector<TouchingContact> touching_contacts() const;
@@ -381,6 +382,7 @@ class DemSystem {
   std::vector<Vec3> wall_history_;
   ContactStore wall_out_;
   std::vector<double> wall_normal_;  // normal force of each wall contact, N
+  std::vector<double> wall_elastic_normal_;  // its elastic part (for_each_touching_contact), N
   // Gather lists. Pair k whose partner lies in another owner block (DemOptions::owner_block; else
   // pair_slot_[k] = -1) stores its partner's side in slot pair_slot_[k] of pair_out_; the
   // slots of particle q are [partner_first_[q], partner_first_[q+1]) (pair order), so the
