@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <string>
 #include <vector>
 
 #include "core/errors.hpp"
@@ -141,7 +142,16 @@ TEST(DemRest, UnrelaxedSpecimenFallsApartAtRest) {
 
 TEST(DemRest, RelaxationIsDeterministicAndRefusesBadParameters) {
   const DemSpecimen& a = relaxed_locked();
-  DemSpecimen b = make_dem_specimen(chapter4_like(true, 0.0));
+  // Rebuilt with a progress observer: the relaxation reports as the preparation's last phase,
+  // "relax", and observing changes nothing.
+  DemSpecimenParams observed = chapter4_like(true, 0.0);
+  std::vector<std::string> phases;
+  observed.packing.on_progress = [&](const PackingProgress& q) {
+    if (phases.empty() || phases.back() != q.phase) phases.push_back(q.phase);
+  };
+  DemSpecimen b = make_dem_specimen(observed);
+  ASSERT_FALSE(phases.empty());
+  EXPECT_EQ(phases.back(), "relax");
   const Particles &pa = a.system().particles(), &pb = b.system().particles();
   ASSERT_EQ(pa.size(), pb.size());
   for (std::size_t i = 0; i < pa.size(); ++i) {

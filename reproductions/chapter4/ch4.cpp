@@ -19,11 +19,12 @@ dem::CachedPacking pack_scene(const nlohmann::json& j, const std::string& scene_
   dem::PackingParams p = dp.packing;
   p.on_progress = [label](const dem::PackingProgress& q) {
     const std::string phase = q.phase;
-    if (q.done % (phase == "prestress" ? 20 : 10) != 0 && q.done != q.most) return;
+    if (q.done % (phase == "growth" || phase == "settle" ? 10 : 20) != 0 && q.done != q.most) return;
     std::printf("%s: %s %d (of at most %d), %s %.3g", label.c_str(), q.phase, q.done, q.most,
-                phase == "growth"   ? "radius scale"
-                : phase == "settle" ? "largest overlap / mean radius"
-                                    : "wall mean stress (Pa)",
+                phase == "growth"    ? "radius scale"
+                : phase == "settle"  ? "largest overlap / mean radius"
+                : phase == "relax"   ? "kinetic / initial elastic energy"
+                                     : "wall mean stress (Pa)",
                 q.value);
     if (phase != "prestress" && std::isfinite(q.wall_stress))
       std::printf(", wall mean stress %.3g Pa", q.wall_stress);

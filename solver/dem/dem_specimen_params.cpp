@@ -55,7 +55,20 @@ DemSpecimen make_dem_specimen(const DemSpecimenParams& p) {
       prep_walls.hold_until_loaded = false;
       DemSpecimen prep(std::move(packed.particles), materials,
                        make_contact_law(materials, p.contact), prep_walls, prep_options);
-      rest = relax_to_rest(prep.coupled_system(), *p.rest);
+      // Progress through the packing's observer, as the preparation's last phase.
+      std::function<void(const RestRelaxationOutcome&)> on_window;
+      if (p.packing.on_progress)
+        on_window = [&, most = p.rest->max_steps / p.rest->check_steps](const RestRelaxationOutcome& o) {
+          PackingProgress q;
+          q.phase = "relax";
+          q.done = o.steps / p.rest->check_steps;
+          q.most = most;
+          q.value = o.kinetic_to_elastic;
+          q.coordination = o.coordination_after;
+          q.kinetic_to_elastic = o.kinetic_to_elastic;
+          p.packing.on_progress(q);
+        };
+      rest = relax_to_rest(prep.coupled_system(), *p.rest, on_window);
       packed.particles = prep.system().particles();
       history = prep.system().contact_history();
     }

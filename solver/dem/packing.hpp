@@ -32,7 +32,8 @@ namespace kolsky::dem {
 
 /// A packing's progress, reported through PackingParams::on_progress.
 struct PackingProgress {
-  const char* phase = "";  ///< "growth", "settle" or "prestress"
+  const char* phase = "";  ///< "growth", "settle", "prestress" or "relax" (make_dem_specimen's
+                           ///< relaxation to rest: check windows, value = kinetic / initial elastic)
   int done = 0;            ///< stages (pre-stress: servo intervals) done in this phase
   int most = 0;            ///< the most this phase can take (it may end earlier)
   double value = 0;        ///< settle: largest overlap / mean radius; prestress: wall mean

@@ -23,7 +23,8 @@ void validate(const RestRelaxationParams& p) {
     throw InputError("", "dem.rest.step_fraction", "must be in (0, 1]");
 }
 
-RestRelaxationOutcome relax_to_rest(DemSystem& sys, const RestRelaxationParams& p) {
+RestRelaxationOutcome relax_to_rest(DemSystem& sys, const RestRelaxationParams& p,
+                                    const std::function<void(const RestRelaxationOutcome&)>& on_window) {
   validate(p);
   RestRelaxationOutcome out;
   sys.compute_forces();
@@ -46,10 +47,12 @@ RestRelaxationOutcome relax_to_rest(DemSystem& sys, const RestRelaxationParams& 
     if (out.steps % p.check_steps != 0) continue;
     out.kinetic_to_elastic = peak / std::max(out.elastic_before, 1e-300);
     peak = 0;
-    if (out.kinetic_to_elastic < p.kinetic_tolerance) {
-      out.converged = true;
-      break;
+    out.converged = out.kinetic_to_elastic < p.kinetic_tolerance;
+    if (on_window) {
+      out.coordination_after = coordination(sys);
+      on_window(out);
     }
+    if (out.converged) break;
   }
   sys.stop_grains();
   out.elastic_after = sys.energy().elastic;

@@ -13,6 +13,8 @@
 // (the law's dashpots, if any, act as well). The walls stay fixed: the porosity is the
 // packing's, the stress is whatever the relaxed network carries (reported). SI units.
 #pragma once
+#include <functional>
+
 #include "dem/dem_system.hpp"
 
 namespace kolsky::dem {
@@ -44,6 +46,10 @@ void validate(const RestRelaxationParams& p);
 
 /// Relaxes `sys` as it is (walls as they are, not moved) until at rest; ends with every
 /// velocity and spin zero. Throws kolsky::InputError ("dem.rest...") for bad parameters.
-RestRelaxationOutcome relax_to_rest(DemSystem& sys, const RestRelaxationParams& p);
+/// `on_window`, if set, observes the outcome so far after every check window (progress: a
+/// large specimen relaxes for minutes); it is not part of the result.
+RestRelaxationOutcome relax_to_rest(
+    DemSystem& sys, const RestRelaxationParams& p,
+    const std::function<void(const RestRelaxationOutcome&)>& on_window = {});
 
 }  // namespace kolsky::dem
