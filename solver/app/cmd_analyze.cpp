@@ -1,4 +1,5 @@
-// `kolsky analyze GAUGES.csv --bars BARS.json [-o OUT.csv] [--plot DIR] [--quiet]`
+// `kolsky analyze GAUGES.csv --bars BARS.json [-o OUT.csv] [--plot DIR] [--quiet]
+//  [--allow-incomplete]`
 // GAUGES.csv: three columns in this order, time (s), incident-bar gauge strain, transmission-
 // bar gauge strain, as measured (compression negative); '#' comments and a header row allowed.
 #include <cmath>
@@ -48,7 +49,7 @@ void check_finite(const shpb::FaceWaves& w, const shpb::SpecimenHistory& h) {
 }  // namespace
 
 int cmd_analyze(const std::vector<std::string>& args) {
-  const Options o = parse_options(args, {"-o", "--bars", "--plot", "--quiet"});
+  const Options o = parse_options(args, {"-o", "--bars", "--plot", "--quiet", "--allow-incomplete"});
   if (o.positional.size() != 1) throw UsageError("needs exactly one GAUGES.csv");
   if (o.bars.empty()) throw UsageError("needs --bars BARS.json");
   const std::string gnuplot = o.plot_dir.empty() ? "" : prepare_plots(o.plot_dir);
@@ -58,6 +59,9 @@ int cmd_analyze(const std::vector<std::string>& args) {
   check_outputs({{"-o", out}}, {file, o.bars});
   const scene::BarsFile bars = scene::load_bars_file(o.bars);
   const io::CsvTable csv = io::read_csv(file);
+  if (!o.allow_incomplete && !csv.comments.empty() && csv.comments.front().starts_with(kIncompleteRecordMark))
+    throw InputError(file, "line 1", "the record is marked '" + csv.comments.front() +
+                                         "'; analysing it needs --allow-incomplete");
   if (csv.columns.size() < 3)
     throw InputError(file, "", "needs 3 columns (time, incident strain, transmitted strain), found " +
                                    std::to_string(csv.columns.size()));

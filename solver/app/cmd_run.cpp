@@ -97,7 +97,11 @@ void write_gauges_csv(const std::string& path, const scene::Scene& sc, const shp
   g.header = {"time_s", "incident_strain", "transmitted_strain"};
   g.columns = {r.t, r.probe(shpb::gauge_probe_name("incident", 0)).value,
                r.probe(shpb::gauge_probe_name("transmission", 0)).value};
-  io::write_csv(path, g,
+  // A stopped or failed run's record is partial: its first comment says so, and `kolsky
+  // analyze` refuses it without --allow-incomplete (an analysis of a cut record looks complete).
+  const std::string mark = r.complete ? "" : std::string(kIncompleteRecordMark) + " (" + r.failure +
+                                                 "): the record ends early\n";
+  io::write_csv(path, g, mark +
                 "simulated gauge record of " + sc.file + " (strain as measured: compression "
                 "negative); gauges at " + std::to_string(sc.spec.incident.gauges.front()) +
                 " m (incident) and " + std::to_string(sc.spec.transmission.gauges.front()) +

@@ -16,6 +16,7 @@ Options parse_options(const std::vector<std::string>& args, const std::vector<st
     if (a.size() > 1 && a[0] == '-') {
       if (!takes(a)) throw UsageError("unknown option '" + a + "'");
       if (a == "--quiet") { o.quiet = true; continue; }
+      if (a == "--allow-incomplete") { o.allow_incomplete = true; continue; }
       if (i + 1 >= args.size()) throw UsageError("option '" + a + "' needs a value");
       const std::string& v = args[++i];
       if (a == "-o") o.output = v;

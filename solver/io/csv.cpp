@@ -82,7 +82,11 @@ CsvTable parse_csv(std::istream& in, const std::string& path) {
   while (std::getline(in, line)) {
     ++line_no;
     const std::string content = trim(line);
-    if (content.empty() || content.front() == '#') continue;
+    if (content.empty()) continue;
+    if (content.front() == '#') {
+      t.comments.push_back(trim(content.substr(1)));
+      continue;
+    }
     const std::vector<std::string> cells = split_cells(content);
     std::vector<double> values(cells.size());
     size_t first_bad = cells.size();

@@ -17,6 +17,7 @@ struct CsvTable {
   std::vector<std::string> header;
   std::vector<std::vector<double>> columns;
   std::vector<size_t> lines;  ///< 1-based file line of each data row (for error messages)
+  std::vector<std::string> comments;  ///< the '#' lines, without the '#' and trimmed, in order
 
   /// Number of data rows (0 for a table without columns).
   size_t rows() const;

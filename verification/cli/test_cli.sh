@@ -128,7 +128,13 @@ analyze)
   grep -q "nan.csv: line 31: non-finite value" err.txt || fail "NaN row message: $(cat err.txt)"
   printf '0,0;0,0\n0,5;1,2\n' > comma.csv
   expect_exit 2 "$kolsky" analyze comma.csv --bars "$ex/bars_song2009.json"
-  grep -q "comma.csv: line 1: .*decimal-comma" err.txt || fail "decimal-comma message: $(cat err.txt)" ;;
+  grep -q "comma.csv: line 1: .*decimal-comma" err.txt || fail "decimal-comma message: $(cat err.txt)"
+  # A record kolsky run marked incomplete (stopped early) is refused unless told.
+  { echo "# INCOMPLETE run (stopped on request): the record ends early"; cat "$ex/gauges_song2009_example.csv"; } > cut.csv
+  expect_exit 2 "$kolsky" analyze cut.csv --bars "$ex/bars_song2009.json" -o c.csv
+  grep -q "cut.csv: line 1: .*--allow-incomplete" err.txt || fail "incomplete record message: $(cat err.txt)"
+  [ ! -e c.csv ] || fail "an output was written for a refused record"
+  expect_exit 0 "$kolsky" analyze cut.csv --bars "$ex/bars_song2009.json" -o c.csv --allow-incomplete ;;
 eos)
   expect_exit 0 "$kolsky" eos --water 3 -o e.csv
   grep -q "^eps_v,p_pa,p_bc_pa,p_d_pa,p_e_pa" e.csv || fail "eos CSV header"
@@ -271,7 +277,7 @@ signals)
   # SIGINT during a DEM run with snapshots and checkpoints: it stops at the next step, keeps
   # the run file and the particle file marked incomplete, leaves no temporary, exits 130.
   dem_scene d.json ', "snapshot_interval": 50e-6'; sed -i 's/"end": 200e-6/"end": 50e-3/' d.json
-  "$kolsky" run d.json -o run.h5 --checkpoint-every 20e-6 >out.txt 2>err.txt & pid=$!
+  "$kolsky" run d.json -o run.h5 --checkpoint-every 20e-6 --gauges-csv g.csv >out.txt 2>err.txt & pid=$!
   for i in $(seq 600); do grep -q "steps of" err.txt && break; sleep 0.1; done  # packed, running
   sleep 1; kill -INT $pid; wait $pid; rc=$?
   [ "$rc" -eq 130 ] || fail "exit $rc after SIGINT (want 130): $(cat err.txt)"
@@ -279,6 +285,7 @@ signals)
   for f in run.h5 run.particles.h5; do
     h5dump -a /meta/complete $f | grep -q "(0): 0" || fail "$f not marked incomplete"; done
   [ -s run.ckpt.h5 ] && [ -s run.xmf ] || fail "outputs missing: $(ls)"
+  head -1 g.csv | grep -q "^# INCOMPLETE run" || fail "gauge record not marked incomplete: $(head -2 g.csv)"
   no_temp_files ;;
 *) fail "unknown case" ;;
 esac
