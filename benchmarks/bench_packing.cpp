@@ -39,6 +39,9 @@ dem::PackingParams chapter4_packing(double upscale) {
   return std::get<dem::DemSpecimenParams>(sc.spec.specimen).packing;
 }
 
+// range(2): 1 the scene's jammed growth (density scaled), 0 the growth before issue 18 (no
+// density scaling, 200 steps a stage), 2 servo-wall compaction, 3 servo walls with rotation
+// locked (issue 31; docs/dem.md, Packing); the procedure's first phase is timed as growth_s.
 void BM_ChapterFourPacking(benchmark::State& st) {
   const double upscale = st.range(0) / 10.0;
   const int previous = omp_get_max_threads();
@@ -48,12 +51,16 @@ void BM_ChapterFourPacking(benchmark::State& st) {
     p.jam_mass_scaling = false;
     p.jam_steps_per_stage = 200;
   }
+  if (st.range(2) >= 2) {
+    p.servo_walls = true;
+    p.packing_lock_rotation = st.range(2) == 3;
+  }
   double phase_s[3] = {0, 0, 0};  // growth, settle, prestress
   Clock::time_point last;
   p.on_progress = [&](const dem::PackingProgress& q) {
     const Clock::time_point now = Clock::now();
     const std::string phase = q.phase;
-    const int k = phase == "growth" ? 0 : phase == "settle" ? 1 : 2;
+    const int k = phase == "growth" || phase == "compaction" ? 0 : phase == "settle" ? 1 : 2;
     phase_s[k] += std::chrono::duration<double>(now - last).count();
     last = now;
   };
@@ -76,8 +83,11 @@ void BM_ChapterFourPacking(benchmark::State& st) {
   st.counters["mean_stress_Pa"] = r.mean_stress;
   st.counters["settled"] = r.settled;
   st.counters["prestress_converged"] = r.prestress_converged;
+  st.counters["fabric_anisotropy"] = dem::fabric_anisotropy(r.particles, p.diameter, p.length);
+  const char* procedure[] = {", unscaled (before issue 18)", "", ", servo walls",
+                             ", servo walls, rotation locked"};
   st.SetLabel("chapter 4 packing, N = " + std::to_string(upscale).substr(0, 3) +
-              (st.range(2) ? "" : ", unscaled (before issue 18)"));
+              procedure[st.range(2)]);
   omp_set_num_threads(previous);
 }
 
@@ -91,5 +101,6 @@ BENCHMARK(BM_ChapterFourPacking)
     ->Args({30, 1, 0})->Args({30, 1, 1})->Args({30, 2, 0})->Args({30, 2, 1})
     ->Args({25, 2, 0})->Args({25, 2, 1})->Args({20, 2, 0})->Args({20, 2, 1})->Args({20, 1, 1})
     ->Args({15, 2, 0})->Args({15, 2, 1})
+    ->Args({40, 2, 2})->Args({40, 2, 3})->Args({20, 2, 2})->Args({20, 2, 3})
     ->Iterations(1)->Unit(benchmark::kSecond)->UseRealTime();
 BENCHMARK_MAIN();

@@ -124,6 +124,29 @@ TEST_F(SceneLaws, PackingFrictionReachesTheJammingStageOnly) {
   }
 }
 
+// The preparation procedures (docs/dem.md, Packing): servo_walls and the rotation lock reach
+// PackingParams; a porosity the servo walls cannot reach is refused up front, naming the key.
+TEST_F(SceneLaws, PackingProceduresAndTheRotationLockReachThePacking) {
+  const DemSpecimenParams jammed = dem_params(dem_scene({{"packing", "jammed"}}));
+  EXPECT_TRUE(jammed.packing.jam);
+  EXPECT_FALSE(jammed.packing.servo_walls);
+  EXPECT_FALSE(jammed.packing.packing_lock_rotation);
+  const DemSpecimenParams servo =
+      dem_params(dem_scene({{"packing", "servo_walls"}, {"packing_lock_rotation", true},
+                            {"packing_density_scaling", true}}));
+  EXPECT_TRUE(servo.packing.servo_walls);
+  EXPECT_FALSE(servo.packing.jam);
+  EXPECT_TRUE(servo.packing.packing_lock_rotation);
+  EXPECT_TRUE(servo.packing.jam_mass_scaling);
+  EXPECT_EQ(servo.packing.jam_steps_per_stage, kJamScaledStepsPerStage);
+  try {
+    dem_params(dem_scene({{"packing", "servo_walls"}, {"porosity", 0.3}}));
+    ADD_FAILURE() << "an unreachable porosity accepted";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.path(), "specimen.porosity");
+  }
+}
+
 TEST_F(SceneLaws, DemSpecimenDefaultsToTheFractionItsRunsAlwaysUsed) {
   // The raw limit has no safety factor in it, so the scene's one factor defaults to 0.5 x 0.3
   // for a DEM specimen: the 0.5 of the loop times the 0.3 DemSystem applied inside before.

@@ -19,9 +19,11 @@ dem::CachedPacking pack_scene(const nlohmann::json& j, const std::string& scene_
   dem::PackingParams p = dp.packing;
   p.on_progress = [label](const dem::PackingProgress& q) {
     const std::string phase = q.phase;
-    if (q.done % (phase == "growth" || phase == "settle" ? 10 : 20) != 0 && q.done != q.most) return;
+    const bool staged = phase == "growth" || phase == "compaction" || phase == "settle";
+    if (q.done % (staged ? 10 : 20) != 0 && q.done != q.most) return;
     std::printf("%s: %s %d (of at most %d), %s %.3g", label.c_str(), q.phase, q.done, q.most,
                 phase == "growth"    ? "radius scale"
+                : phase == "compaction" ? "wall gap / length"
                 : phase == "settle"  ? "largest overlap / mean radius"
                 : phase == "relax"   ? "kinetic / initial elastic energy"
                                      : "wall mean stress (Pa)",

@@ -13,6 +13,7 @@
 #include <fstream>
 #include <numbers>
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -30,6 +31,7 @@ struct Options {
   std::string scene, relax = "scene", cache, csv;
   double hold = 200e-6, every = 10e-6, upscale = 0, rolling = -1, diameter = 0, length = 0;
   int relax_steps = 0;
+  std::vector<std::string> sets;  // --set dotted.key=JSON
 };
 
 [[noreturn]] void usage(int code) {
@@ -37,6 +39,7 @@ struct Options {
                "usage: study_at_rest SCENE.json [--relax on|off|scene] [--hold S] [--every S]\n"
                "                     [--cache DIR] [--upscale N] [--csv OUT.csv] [--relax-steps K]\n"
                "                     [--rolling K] [--diameter M] [--length M]\n"
+               "                     [--set dotted.key=JSON ...]  (e.g. specimen.packing='\"servo_walls\"')\n"
                "Steps the scene's DEM specimen with fixed walls and no load; prints Z, wall\n"
                "stresses and kinetic energy every --every seconds up to --hold (default 200 us).\n");
   std::exit(code);
@@ -58,6 +61,7 @@ Options parse(int argc, char** argv) {
     else if (a == "--upscale") o.upscale = std::stod(value());
     else if (a == "--csv") o.csv = value();
     else if (a == "--relax-steps") o.relax_steps = std::stoi(value());
+    else if (a == "--set") o.sets.push_back(value());
     else if (a == "--rolling") o.rolling = std::stod(value());
     else if (a == "--diameter") o.diameter = std::stod(value());
     else if (a == "--length") o.length = std::stod(value());
@@ -98,6 +102,17 @@ int main(int argc, char** argv) {
     if (o.rolling >= 0) j["specimen"]["rolling_factor"] = o.rolling;
     if (o.diameter > 0) j["specimen"]["diameter"] = o.diameter;
     if (o.length > 0) j["specimen"]["length"] = o.length;
+    for (const std::string& s : o.sets) {
+      const auto eq = s.find('=');
+      if (eq == std::string::npos) usage(1);
+      nlohmann::json* at = &j;
+      std::string key = s.substr(0, eq);
+      for (auto dot = key.find('.'); dot != std::string::npos; dot = key.find('.')) {
+        at = &(*at)[key.substr(0, dot)];
+        key = key.substr(dot + 1);
+      }
+      (*at)[key] = nlohmann::json::parse(s.substr(eq + 1));
+    }
     const std::string dir = std::filesystem::path(o.scene).parent_path().string();
     auto sc = scene::parse_scene(j, o.scene, dir);
     auto& dp = std::get<dem::DemSpecimenParams>(sc.spec.specimen);

@@ -31,13 +31,6 @@ void check(bool ok, const std::string& field, const std::string& rule) {
   if (!ok) throw InputError("", "dem.packing." + field, rule);
 }
 
-// mass_floor > 0: density scaling (jam_stage): no grain lighter than mass_floor.
-void set_radius(Particles& p, std::size_t i, double r, double rho, double mass_floor = 0) {
-  p.radius[i] = r;
-  p.mass[i] = std::max(sphere_mass(r, rho), mass_floor);
-  p.inertia[i] = 0.4 * p.mass[i] * r * r;
-}
-
 void set_scale(Particles& q, const std::vector<double>& target, double scale, double rho,
                double quench, double mass_floor = 0) {
   for (std::size_t i = 0; i < q.size(); ++i) {
@@ -45,6 +38,56 @@ void set_scale(Particles& q, const std::vector<double>& target, double scale, do
     q.v[i] = quench * q.v[i];
     q.omega[i] = quench * q.omega[i];
   }
+}
+
+// Random sequential addition of the grains d (sorted descending) at `scale` times their size,
+// each entirely inside the cylinder of radius D/2 and the given length, then a spatial sort;
+// `target` gets each particle's full radius, in particle order.
+Particles place_rsa(const PackingParams& in, const std::vector<double>& d, double scale,
+                    double length, std::vector<double>& target) {
+  const double R = in.diameter / 2, L = length;
+  const std::vector<Material> materials{in.material};
+  Xoshiro256ss rng(in.seed ^ 0x5deece66dULL);
+  Particles p;
+  p.reserve(d.size());
+  target.reserve(d.size());
+  {
+    CellGrid grid(scale * d.front(), R, L);
+    for (std::size_t s = 0; s < d.size(); ++s) {
+      const double r = scale * d[s] / 2;
+      bool placed = false;
+      for (int attempt = 0; attempt < in.max_rsa_attempts && !placed; ++attempt) {
+        const double rho = (R - r) * std::sqrt(rng.uniform_open());
+        const double phi = 2 * kPi * rng.uniform_open();
+        const Vec3 c{rho * std::cos(phi), rho * std::sin(phi), r + (L - 2 * r) * rng.uniform_open()};
+        const bool free = grid.visit(c, [&](int q) {
+          const double dd = r + p.radius[q];
+          return norm2(p.x[q] - c) >= dd * dd;
+        });
+        if (!free) continue;
+        grid.insert(c, static_cast<int>(p.size()));
+        p.add(c, r, 0, materials);
+        target.push_back(d[s] / 2);
+        placed = true;
+      }
+      // The scene has no initial_solid_fraction (dem_keys.cpp names this after the grains).
+      check(placed, "initial_solid_fraction",
+            "random sequential addition found no place for grain " + std::to_string(s + 1) +
+                " of " + std::to_string(d.size()) + " (" + std::to_string(d[s]) +
+                " m) after " + std::to_string(in.max_rsa_attempts) +
+                " tries: the grains are too coarse for the cylinder; smaller grains, a larger "
+                "specimen or another seed");
+    }
+  }
+  // Spatial order for memory locality; the target radii follow the permutation.
+  const std::size_t n = p.size();
+  for (std::size_t i = 0; i < n; ++i) p.f[i] = {target[i], 0, 0};  // carry target through
+  sort_spatially(p, scale * d.front());
+  for (std::size_t i = 0; i < n; ++i) {
+    target[i] = p.f[i].x;
+    p.f[i] = {};
+  }
+  return p;
 }
 
 // Loose packing (jam = false): growth and settling with frictionless damped linear contacts.
@@ -92,29 +135,13 @@ void jam_stage(const PackingParams& in, Particles p, const std::vector<double>& 
                double s0, double mean_r, PackingResult& res) {
   const double R = in.diameter / 2, L = in.length;
   const std::vector<Material> materials{in.material};
-  const double E = in.material.youngs_modulus, nu = in.material.poisson_ratio;
-  // Hertz between two mean grains: E* = E / (2(1 - nu^2)), R* = r/2; secant F/delta at delta_t.
-  const double e_star = E / (2 * (1 - nu * nu));
-  const double delta_t = in.jam_overlap * mean_r;
-  const double k = 4.0 / 3.0 * e_star * std::sqrt(0.5 * mean_r * delta_t);
   const double n = static_cast<double>(target.size());
-  // k_s = 2/7 k_n: the tangential mode of a sphere (effective mass m/3.5) then has the normal
-  // mode's frequency, so friction does not lower the stable step.
-  auto law_of = [&](double friction) {
-    return linear_spring(k, 2.0 / 7.0 * k, friction, in.damping_ratio, in.damping_ratio);
-  };
-  // Density scaling: the packing's end state is a static equilibrium, which does not depend on
-  // the masses, while the step does (sqrt(m_min / k)); the mean grain's mass as a floor raises
-  // the step by sqrt(m_mean / m_min), ~5x for the Song curve (docs/dem.md, "Packing").
-  double mass_floor = 0;
-  if (in.jam_mass_scaling) {
-    for (double r : target) mass_floor += sphere_mass(r, in.material.density);
-    mass_floor /= n;
-  }
+  auto law_of = [&](double friction) { return jam_law(in, mean_r, friction); };
+  const double mass_floor = jam_mass_floor(in, target);
   for (std::size_t i = 0; i < p.size(); ++i)
     set_radius(p, i, p.radius[i], in.material.density, mass_floor * s0 * s0 * s0);
   std::optional<DemSystem> sys;
-  sys.emplace(std::move(p), materials, law_of(in.jam_friction), DemOptions{});
+  sys.emplace(std::move(p), materials, law_of(in.jam_friction), packing_options(in));
   // Frictionless walls, so the wall zone is not held looser than the core by wall friction.
   add_packing_walls(*sys, R, L, law_of(0.0));
   const double dt = kDemStepFraction * sys->stable_dt();
@@ -195,6 +222,11 @@ PackingResult generate_packing(const PackingParams& in) {
   check(in.jam_steps_per_stage >= 1, "jam_steps_per_stage", "must be >= 1");
   check(in.jam_velocity_quench >= 0 && in.jam_velocity_quench <= 1, "jam_velocity_quench",
         "must be in [0, 1]");
+  // Spheres pack no denser than ~0.64 at random (0.74 ordered); walls closing on a denser
+  // target would press the grains into one another instead of packing them.
+  check(!in.servo_walls || 1 - in.porosity <= 0.64, "porosity",
+        "servo-wall compaction cannot reach a solid fraction above random close packing (0.64): "
+        "porosity must be >= 0.36");
   check(in.initial_stress >= 0 && std::isfinite(in.initial_stress), "initial_stress",
         "must be finite and >= 0");
   check(in.prestress_friction >= 0, "prestress_friction", "must be >= 0");
@@ -216,7 +248,7 @@ PackingResult generate_packing(const PackingParams& in) {
     return res;
   }
 
-  const double R = in.diameter / 2, L = in.length;
+  const double L = in.length;
   const double volume = psd::cylinder_volume(in.diameter, L);
   const std::vector<double> d = psd::sample_diameters(in.curve, volume * (1 - in.porosity),
                                                       in.seed);
@@ -230,56 +262,19 @@ PackingResult generate_packing(const PackingParams& in) {
   res.curve_deviation = psd::max_passing_deviation(in.curve, d);
   res.curve_deviation_bound = psd::max_passing_deviation_bound(in.curve, volume * (1 - in.porosity));
 
-  // 2. RSA of the shrunk spheres, largest first.
-  const double s0 = std::cbrt(in.initial_solid_fraction / (1 - in.porosity));
-  Xoshiro256ss rng(in.seed ^ 0x5deece66dULL);
-  Particles p;
-  p.reserve(d.size());
+  // 2. RSA, largest first: the spheres shrunk by s0 in the cylinder (growth), or at full size
+  // in a cylinder long enough for the same initial solid fraction (servo-wall compaction).
+  const double s0 = in.servo_walls ? 1.0 : std::cbrt(in.initial_solid_fraction / (1 - in.porosity));
+  const double place_length = in.servo_walls ? servo_initial_length(in) : L;
   std::vector<double> target;  // full radius, in particle order
-  target.reserve(d.size());
-  {
-    CellGrid grid(s0 * d.front(), R, L);
-    for (std::size_t s = 0; s < d.size(); ++s) {
-      const double r = s0 * d[s] / 2;
-      bool placed = false;
-      for (int attempt = 0; attempt < in.max_rsa_attempts && !placed; ++attempt) {
-        const double rho = (R - r) * std::sqrt(rng.uniform_open());
-        const double phi = 2 * kPi * rng.uniform_open();
-        const Vec3 c{rho * std::cos(phi), rho * std::sin(phi), r + (L - 2 * r) * rng.uniform_open()};
-        const bool free = grid.visit(c, [&](int q) {
-          const double dd = r + p.radius[q];
-          return norm2(p.x[q] - c) >= dd * dd;
-        });
-        if (!free) continue;
-        grid.insert(c, static_cast<int>(p.size()));
-        p.add(c, r, 0, materials);
-        target.push_back(d[s] / 2);
-        placed = true;
-      }
-      // The scene has no initial_solid_fraction (dem_keys.cpp names this after the grains).
-      check(placed, "initial_solid_fraction",
-            "random sequential addition found no place for grain " + std::to_string(s + 1) +
-                " of " + std::to_string(d.size()) + " (" + std::to_string(d[s]) +
-                " m) after " + std::to_string(in.max_rsa_attempts) +
-                " tries: the grains are too coarse for the cylinder; smaller grains, a larger "
-                "specimen or another seed");
-    }
-  }
-  // Spatial order for memory locality; the target radii follow the permutation.
-  {
-    const std::size_t n = p.size();
-    for (std::size_t i = 0; i < n; ++i) p.f[i] = {target[i], 0, 0};  // carry target through
-    sort_spatially(p, s0 * d.front());
-    for (std::size_t i = 0; i < n; ++i) {
-      target[i] = p.f[i].x;
-      p.f[i] = {};
-    }
-  }
+  Particles p = place_rsa(in, d, s0, place_length, target);
 
   double mean_r = 0;
   for (double r : target) mean_r += r;
   mean_r /= static_cast<double>(target.size());
-  if (in.jam) {
+  if (in.servo_walls) {
+    servo_wall_stage(in, std::move(p), target, mean_r, res);
+  } else if (in.jam) {
     jam_stage(in, std::move(p), target, s0, mean_r, res);
   } else {
     loose_stage(in, std::move(p), target, s0, mean_r, res);

@@ -32,7 +32,8 @@ namespace kolsky::dem {
 
 /// A packing's progress, reported through PackingParams::on_progress.
 struct PackingProgress {
-  const char* phase = "";  ///< "growth", "settle", "prestress" or "relax" (make_dem_specimen's
+  const char* phase = "";  ///< "growth" (or "compaction": the servo walls' gap / L), "settle",
+                           ///< "prestress" or "relax" (make_dem_specimen's
                            ///< relaxation to rest: check windows, value = kinetic / initial elastic)
   int done = 0;            ///< stages (pre-stress: servo intervals) done in this phase
   int most = 0;            ///< the most this phase can take (it may end earlier)
@@ -80,6 +81,16 @@ struct PackingParams {
   /// Off by default, so existing scenes keep their packings (scene key
   /// specimen.packing_density_scaling; docs/dem.md, "Packing").
   bool jam_mass_scaling = false;
+  /// Servo-wall compaction instead of growth (scene "packing": "servo_walls"; docs/dem.md,
+  /// "Packing"): the grains placed at full size in a cylinder of length L (1 - n) /
+  /// initial_solid_fraction, the end walls closing symmetrically to L over growth_stages stages
+  /// of jam_steps_per_stage steps under the jammed packing's law (jam_friction, jam_overlap,
+  /// jam_velocity_quench, jam_mass_scaling), then quenched settling. Overrides jam.
+  bool servo_walls = false;
+  /// Grains do not rotate while the jammed growth or the servo-wall compaction runs (k = 0 of
+  /// Eqs. 4.12-4.14; scene key specimen.packing_lock_rotation). The pre-stress has its own
+  /// (prestress_lock_rotation).
+  bool packing_lock_rotation = false;
   // Pre-stress (prestress.hpp; docs/dem.md "Pre-stress"), after the settling; off at 0: all
   // radii scaled by one servo-controlled factor until the wall mean stress under damped
   // Hertz-Mindlin grain contacts (rigid frictionless Hertz walls) is initial_stress.
@@ -147,5 +158,11 @@ double max_packing_overlap(const Particles& p, double diameter, double length);
 /// as rattlers). A contact is a geometric overlap (PackingResult::coordination_no_rattlers).
 std::pair<double, double> coordination_without_rattlers(const Particles& p, double diameter,
                                                         double length);
+
+/// Deviatoric fabric of the grain contacts about the cylinder axis: phi_zz - (phi_xx + phi_yy)/2
+/// of the fabric tensor phi = <n n> over touching pairs (Satake 1982; Oda 1982): 0 for isotropic
+/// contact normals, > 0 with more of them along z (at most 1), < 0 with more across (at least
+/// -1/2). Walls are not counted.
+double fabric_anisotropy(const Particles& p, double diameter, double length);
 
 }  // namespace kolsky::dem

@@ -125,6 +125,8 @@ std::string packing_cache_key(const PackingParams& q) {
   h.add(q.jam), h.add(q.jam_friction), h.add(q.jam_overlap), h.add(q.jam_steps_per_stage);
   h.add(q.jam_velocity_quench);
   if (q.jam && q.jam_mass_scaling) h.add(q.jam_mass_scaling);  // earlier keys unchanged otherwise
+  if (q.servo_walls) h.add(q.servo_walls), h.add(q.jam_mass_scaling);  // likewise
+  if (q.packing_lock_rotation) h.add(q.packing_lock_rotation);
   if (q.initial_stress > 0) {  // unstressed packings keep the keys they had before
     h.add(q.initial_stress), h.add(q.prestress_friction), h.add(q.prestress_restitution);
     h.add(q.prestress_tolerance), h.add(q.prestress_servo_interval);

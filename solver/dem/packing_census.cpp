@@ -135,6 +135,32 @@ std::pair<double, double> coordination_without_rattlers(const Particles& p, doub
   return without_rattlers(p, diameter, length);
 }
 
+double fabric_anisotropy(const Particles& p, double diameter, double length) {
+  double r_max = 0;
+  for (double r : p.radius) r_max = std::max(r_max, r);
+  if (p.size() == 0) return 0;
+  CellGrid grid(2 * r_max, diameter / 2, length);
+  double sum_nz2 = 0;
+  std::size_t contacts = 0;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    const Vec3& x = p.x[i];
+    grid.visit(x, [&](int q) {
+      const double dd = p.radius[i] + p.radius[q];
+      const Vec3 d = p.x[q] - x;
+      const double dist2 = norm2(d);
+      if (dist2 < dd * dd && dist2 > 0) {
+        sum_nz2 += d.z * d.z / dist2;
+        ++contacts;
+      }
+      return true;
+    });
+    grid.insert(x, static_cast<int>(i));
+  }
+  if (contacts == 0) return 0;
+  const double phi_zz = sum_nz2 / static_cast<double>(contacts);
+  return 0.5 * (3 * phi_zz - 1);  // phi_zz - (phi_xx + phi_yy) / 2, the trace being 1
+}
+
 // Census of the final state: coordination (with and without walls and rattlers), largest
 // overlap, and the contact-virial mean stress the grains would carry with Hertz contacts
 // (rigid Hertz walls), the law of the SHPB runs (Sec. 4.3); then the grains are put at rest

@@ -64,9 +64,15 @@ dem::DemSpecimenParams read_dem_specimen(JsonReader& r, const std::string& base_
   d.packing.length = r.number("specimen.length");
   d.packing.seed = static_cast<std::uint64_t>(r.integer("specimen.seed"));
   check_packable(r, d.packing);
-  d.packing.jam = r.text("specimen.packing") == "jammed";
+  const std::string procedure = r.text("specimen.packing");
+  d.packing.jam = procedure == "jammed";
+  d.packing.servo_walls = procedure == "servo_walls";
+  d.packing.packing_lock_rotation = r.boolean("specimen.packing_lock_rotation");
+  if (d.packing.servo_walls && 1 - d.packing.porosity > 0.64)  // as dem/packing.cpp, up front
+    r.fail("specimen.porosity", "servo_walls cannot compact spheres beyond random close packing "
+                                "(solid fraction 0.64): porosity must be >= 0.36");
   // Read for every dem scene (a loose packing has no jamming stage to scale).
-  if (r.boolean("specimen.packing_density_scaling") && d.packing.jam) {
+  if (r.boolean("specimen.packing_density_scaling") && (d.packing.jam || d.packing.servo_walls)) {
     d.packing.jam_mass_scaling = true;
     d.packing.jam_steps_per_stage = dem::kJamScaledStepsPerStage;
   }

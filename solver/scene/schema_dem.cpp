@@ -41,17 +41,25 @@ void add_dem_rows(TableBuilder& s) {
   s.add(VT::integer, "specimen.seed", static_cast<int>(pack.seed), "-", kNonNegative,
         "Seed of the grain sampling and placement", dem);
   s.add(VT::choice, "specimen.packing", pack.jam ? "jammed" : "loose", "-", kNoRange,
-        "Packing procedure: loose (frictionless growth) or jammed (frictional contact network "
-        "at the target porosity; docs/dem.md, Packing)",
-        dem, {"loose", "jammed"});
+        "Packing procedure: loose (frictionless growth), jammed (frictional growth: a contact "
+        "network at the target porosity) or servo_walls (grains placed loose in a longer "
+        "cylinder, the end walls closing on the specimen length under the frictional law; "
+        "docs/dem.md, Packing)",
+        dem, {"loose", "jammed", "servo_walls"});
   s.add(VT::boolean, "specimen.packing_density_scaling", pack.jam_mass_scaling, "-", kNoRange,
         "Jammed packing with density scaling: no grain lighter than the mean grain while "
         "jamming, " + std::to_string(dem::kJamScaledStepsPerStage) +
             " steps per stage; about 3-4x faster, same porosity, coordination and rattlers "
             "(docs/dem.md, Packing); a loose packing ignores it",
         dem);
+  s.add(VT::boolean, "specimen.packing_lock_rotation", pack.packing_lock_rotation, "-", kNoRange,
+        "Grains do not rotate while a jammed packing grows or the servo walls compact it (the "
+        "pre-stress locks rotation anyway; the run uses specimen.rolling_factor); a loose "
+        "packing ignores it (docs/dem.md, Packing)",
+        dem);
   s.add(VT::number, "specimen.packing_friction", pack.jam_friction, "-", kNonNegative,
-        "Grain-grain friction while a jammed packing grows (mu_pack): it sets how loose a "
+        "Grain-grain friction while a jammed packing grows or the servo walls compact it "
+        "(mu_pack; the grains' own: specimen.grain_friction's value): it sets how loose a "
         "contact network the grains lock into; the run uses the contact law's own friction "
         "(docs/dem.md, Packing); a loose packing ignores it",
         dem);
