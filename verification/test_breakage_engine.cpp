@@ -323,7 +323,8 @@ DemSpecimen breaking_specimen() {
   walls.length = scene.top() + scene.r;
   walls.radius = scene.tube_radius;
   DemSpecimen s(grains, kBusySand, HertzMindlin(kBusySand, kHm), walls, opt);
-  s.enable_breakage(bp, 17, 7);  // checks every 7 steps: the checkpoint at 800 falls between two
+  s.enable_breakage(bp, 17, 7);  // checks every 7 steps: the checkpoint at 120 falls between two
+                                 // (breaks at steps 50-400: 8 by 100, 18 by 400)
   return s;
 }
 
@@ -340,13 +341,13 @@ TEST(BreakageEngine, RestartAfterBreaksContinuesBitwise) {
   const double dt = kDemStepFraction * whole.stable_dt();
   drive(whole, 0, 1600, dt);
   DemSpecimen first = breaking_specimen();
-  drive(first, 0, 800, dt);
+  drive(first, 0, 120, dt);
   const DemSpecimenState saved = first.save_state();
   ASSERT_TRUE(saved.breakage.has_value());
   ASSERT_GT(saved.breakage->n_primary, 0u) << "no break before the checkpoint: the test proves nothing";
   DemSpecimen resumed = breaking_specimen();
   resumed.restore_state(saved);
-  drive(resumed, 800, 1600, dt);
+  drive(resumed, 120, 1600, dt);
   const Particles &a = whole.system().particles(), &b = resumed.system().particles();
   RecordProperty("breaks_at_checkpoint", std::to_string(saved.breakage->n_primary + saved.breakage->n_secondary));
   RecordProperty("breaks_at_end", std::to_string(n_breaks(whole.breakage()->ledger)));

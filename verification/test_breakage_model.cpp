@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <bit>
+#include <cstdint>
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -19,6 +20,7 @@
 #include <vector>
 
 #include "core/errors.hpp"
+#include "core/hash.hpp"
 #include "dem/apollonian.hpp"
 #include "dem/breakage_model.hpp"
 #include "test_support.hpp"
@@ -51,6 +53,30 @@ double correlation(std::span<const double> x, std::span<const double> y) {
   }
   const double cxy = sxy / n - sx * sy / (n * n);
   return cxy / std::sqrt((sxx / n - sx * sx / (n * n)) * (syy / n - sy * sy / (n * n)));
+}
+
+// The strength draw is reproducible from docs/breakage.md alone ("Strength variability"), with
+// the published FNV-1a 64 offset basis 14695981039346656037 and SplitMix64 (Steele et al. 2014)
+// written out here; until 2026-12-04 the code's basis had lost its last digit (issue 32).
+TEST(BreakageVariability, DocumentedRecipeReproducesTheDraws) {
+  const auto splitmix = [](std::uint64_t& state) {
+    std::uint64_t z = (state += 0x9e3779b97f4a7c15ull);
+    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
+    z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
+    return z ^ (z >> 31);
+  };
+  std::uint64_t fnv = 14695981039346656037ull;
+  for (unsigned char c : std::string("kolsky.breakage.var")) fnv = (fnv ^ c) * 1099511628211ull;
+  EXPECT_EQ(fnv1a_64("a"), 0xaf63dc4c8601ec8cull);  // the published test vector
+  const BreakageParams p;
+  for (std::uint64_t seed : {1ull, 2009ull}) {
+    std::uint64_t key_state = seed ^ fnv;
+    std::uint64_t stream = splitmix(key_state);  // the stream's key
+    for (std::uint64_t id = 0; id < 5; ++id) {
+      const double u = static_cast<double>(splitmix(stream) >> 11) * 0x1.0p-53;  // output id + 1
+      EXPECT_EQ(strength_variability(p, seed, id), (u - p.var_b) / p.var_a) << seed << " " << id;
+    }
+  }
 }
 
 TEST(BreakageCriterion, ClosedFormSolvesTheImplicitEq513) {

@@ -28,7 +28,7 @@ namespace detail {
 
 /// FNV-1a over the path, mixed with the seed (splitmix64 finaliser): stable across builds.
 inline std::uint64_t path_hash(unsigned seed, const std::string& path) {
-  std::uint64_t h = fnv1a_64(path);
+  std::uint64_t h = fnv1a_64(path, kLegacyIdentityOffset);
   h ^= 0x9e3779b97f4a7c15ull * (seed + 1ull);
   h = (h ^ (h >> 30)) * 0xbf58476d1ce4e5b9ull;
   h = (h ^ (h >> 27)) * 0x94d049bb133111ebull;

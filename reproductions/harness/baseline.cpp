@@ -361,7 +361,7 @@ Baseline load_baseline(const std::string& path) {
 std::string baseline_digest(const Baseline& b) {
   char hex[17];
   std::snprintf(hex, sizeof hex, "%016llx",
-                static_cast<unsigned long long>(fnv1a_64(baseline_json(b)["values"].dump())));
+                static_cast<unsigned long long>(fnv1a_64(baseline_json(b)["values"].dump(), kLegacyIdentityOffset)));
   return hex;
 }
 
