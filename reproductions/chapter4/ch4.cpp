@@ -67,6 +67,28 @@ std::vector<double> parse_list(const std::string& text) {
   return out;
 }
 
+std::string apply_scene_overrides(nlohmann::json& scene, const char* overrides) {
+  if (!overrides || !*overrides) return "";
+  std::string note, all = overrides;
+  while (!all.empty()) {
+    const auto semi = all.find(';');
+    const std::string item = all.substr(0, semi);
+    all = semi == std::string::npos ? "" : all.substr(semi + 1);
+    if (item.empty()) continue;
+    const auto eq = item.find('=');
+    if (eq == std::string::npos) throw std::runtime_error("KOLSKY_CH4_SET: '" + item + "' has no '='");
+    nlohmann::json* at = &scene;
+    std::string key = item.substr(0, eq);
+    for (auto dot = key.find('.'); dot != std::string::npos; dot = key.find('.')) {
+      at = &(*at)[key.substr(0, dot)];
+      key = key.substr(dot + 1);
+    }
+    (*at)[key] = nlohmann::json::parse(item.substr(eq + 1));
+    note += (note.empty() ? "" : ", ") + std::string("`") + item + "`";
+  }
+  return note.empty() ? "" : "**Diagnostic run: scene keys overridden by KOLSKY_CH4_SET: " + note + ".**\n\n";
+}
+
 std::vector<double> scaled(const std::vector<double>& v, double f, long n) {
   const long m = n < 0 ? static_cast<long>(v.size()) : std::min<long>(n, v.size());
   std::vector<double> out(m);

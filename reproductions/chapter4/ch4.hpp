@@ -67,6 +67,10 @@ WallLayer wall_layer(const nlohmann::json& j, const dem::Particles& p);
 nlohmann::json read_json(const std::string& path);
 /// "0,0.999,1" -> {0, 0.999, 1}; "" -> {} (environment overrides of the driver's lists).
 std::vector<double> parse_list(const std::string& text);
+/// Applies "dotted.key=JSON;dotted.key=JSON" (KOLSKY_CH4_SET; null or "": nothing) to the
+/// scene and returns the report's note naming them ("" when none). Throws std::runtime_error
+/// for an item without '=' or a value that is not JSON.
+std::string apply_scene_overrides(nlohmann::json& scene, const char* overrides);
 std::vector<double> scaled(const std::vector<double>& v, double f, long n = -1);
 /// Reference value of a target in targets.json (its "value", in the file's unit).
 double reference_value(const nlohmann::json& targets, const std::string& id);

@@ -90,13 +90,15 @@ int main(int argc, char** argv) {
   auto scene_json = repro::read_scene_json(scene_path, args.perturb_seed);
   const std::string cache = std::filesystem::absolute(rep.out_dir + "/packing_cache").string();
   scene_json["specimen"]["packing_cache"] = cache;
+  // KOLSKY_CH4_SET="specimen.packing=\"servo_walls\";specimen.upscale=3": diagnostic scene
+  // overrides (README, "The preparation study"); the report's preamble lists them.
+  std::string override_note = ch4::apply_scene_overrides(scene_json, std::getenv("KOLSKY_CH4_SET"));
   const double upscale = scene_json["specimen"]["upscale"].get<double>();
   // KOLSKY_CH4_POROSITY: a diagnostic override of the specimen porosity (README, "A specimen
   // that starts jammed"); the report then says so, and the porosity target fails.
-  std::string override_note;
   if (const char* env = std::getenv("KOLSKY_CH4_POROSITY")) {
     scene_json["specimen"]["porosity"] = std::stod(env);
-    override_note = "**Diagnostic run: specimen porosity overridden to " + std::string(env) +
+    override_note += "**Diagnostic run: specimen porosity overridden to " + std::string(env) +
                     " by KOLSKY_CH4_POROSITY (the text's is 0.44).**\n\n";
   }
   // KOLSKY_CH4_RELAX_TO_REST=1: the specimen relaxed to rest under the run's law before the
