@@ -26,6 +26,8 @@ help:
 	@echo "  make reproduce-chapter4  Chapter 4 DEM SHPB, N = 2: 4 runs, the k calibration, upscaling and seed studies (~21 min from scratch on two threads; see reproductions/chapter4/README.md)"
 	@echo "  make reproduce-chapter5  Chapter 5 DEM with breakage: Wang, Huang, Song, sigma_lim0(N) back-calculation (48 min on two cores from scratch; see reproductions/chapter5/README.md)"
 	@echo "  make reproduce-chapter3  Chapter 3 coupled FE-DEM SHPB, N = 3: grain-size cases, friction, model levels, NORMK back-calculation (~8 min on one core; see reproductions/chapter3/README.md)"
+	@echo "  make study-at-rest  issue 31 item 0: the Chapter 4 specimen held at rest, as packed and relaxed (N = 4, 3, 2; ~15 min) -> $(BUILD)/study-at-rest/"
+	@echo "  make study-preparation  issue 31 H1: each packing procedure, relaxed, loaded (N = 4, 3; ~15 min) -> $(BUILD)/study-preparation/"
 	@echo "  make rebaseline SET=<set> REASON=\"...\" [SCALE=smoke|full] [RUNS=n]"
 	@echo "                     rewrite reproductions/<set>/baseline_<scale>.json, log it in reproductions/BASELINES.md"
 	@echo "  make gate          the regression gate alone, on the smoke results of the last make test"
@@ -59,6 +61,14 @@ reproduce: build
 
 reproduce-verification reproduce-bars reproduce-chapter2 reproduce-chapter3 reproduce-chapter4 reproduce-chapter5: reproduce-%: build
 	@$(BUILD)/reproductions/reproduce_$* --scale full --out $(REPORTS)/$*
+
+# Studies behind the chapter READMEs (not part of make reproduce; resumable).
+.PHONY: study-at-rest study-preparation
+study-at-rest: build
+	@bash scripts/study-at-rest.sh $(BUILD) $(BUILD)/study-at-rest
+
+study-preparation: build
+	@bash scripts/study-preparation.sh $(BUILD) $(BUILD)/study-preparation
 
 rebaseline: build
 	@bash scripts/rebaseline.sh $(BUILD) "$(SET)" "$(or $(SCALE),smoke)" "$(RUNS)" "$(REASON)"

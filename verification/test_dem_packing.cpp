@@ -11,6 +11,7 @@
 #include "dem/packing.hpp"
 #include "io/csv.hpp"
 #include "psd/sampling.hpp"
+#include "song_packing.hpp"
 
 namespace kolsky::dem {
 namespace {
@@ -102,13 +103,7 @@ TEST(DemPacking, DeterministicForASeed) {
 // (0.5 % of a radius, 1 um here) so the quenched settling stops within the test's budget.
 void expect_frictional_network(const PackingParams& in) {
   const PackingResult r = generate_packing(in);
-  const double volume = psd::cylinder_volume(in.diameter, in.length);
-  const double d_max = in.curve.d_max();
-  EXPECT_NEAR(r.porosity, 0.44, std::numbers::pi * d_max * d_max * d_max / 12 / volume);
-  EXPECT_NEAR(static_cast<double>(r.count) / r.expected_count, 1.0, 0.05);
-  EXPECT_LE(r.curve_deviation, r.curve_deviation_bound);
-  EXPECT_TRUE(r.settled);
-  EXPECT_LT(r.max_overlap, in.overlap_tolerance);
+  testing::expect_packing_guarantees(in, r);
   EXPECT_DOUBLE_EQ(r.packing_friction, in.jam_friction);
   // Frictional jamming: the load-bearing grains (rattlers, < 2 contacts, removed repeatedly)
   // have between the isostatic counts 4 (mu -> infinity) and 6 (mu = 0); 3.5 leaves room for

@@ -39,13 +39,7 @@ const PackingResult& packed(bool lock_rotation) {
 TEST(DemPackingServo, ReachesThePorosityInAFrictionalNetwork) {
   const PackingParams in = servo(false);
   const PackingResult& r = packed(false);
-  const double volume = psd::cylinder_volume(in.diameter, in.length);
-  const double d_max = in.curve.d_max();
-  EXPECT_NEAR(r.porosity, 0.44, std::numbers::pi * d_max * d_max * d_max / 12 / volume);
-  EXPECT_NEAR(static_cast<double>(r.count) / r.expected_count, 1.0, 0.05);
-  EXPECT_LE(r.curve_deviation, r.curve_deviation_bound);
-  EXPECT_TRUE(r.settled);
-  EXPECT_LT(r.max_overlap, in.overlap_tolerance);  // walls at 0 and L included
+  testing::expect_packing_guarantees(in, r);
   for (std::size_t i = 0; i < r.count; ++i) {
     const Vec3& x = r.particles.x[i];
     ASSERT_GT(x.z, 0.0);

@@ -7,6 +7,7 @@
 #include <fstream>
 #include <stdexcept>
 
+#include "common/scene_override.hpp"
 #include "dem/wall_layer.hpp"
 #include "scene/scene.hpp"
 
@@ -75,15 +76,8 @@ std::string apply_scene_overrides(nlohmann::json& scene, const char* overrides) 
     const std::string item = all.substr(0, semi);
     all = semi == std::string::npos ? "" : all.substr(semi + 1);
     if (item.empty()) continue;
-    const auto eq = item.find('=');
-    if (eq == std::string::npos) throw std::runtime_error("KOLSKY_CH4_SET: '" + item + "' has no '='");
-    nlohmann::json* at = &scene;
-    std::string key = item.substr(0, eq);
-    for (auto dot = key.find('.'); dot != std::string::npos; dot = key.find('.')) {
-      at = &(*at)[key.substr(0, dot)];
-      key = key.substr(dot + 1);
-    }
-    (*at)[key] = nlohmann::json::parse(item.substr(eq + 1));
+    if (!repro::set_scene_key(scene, item))
+      throw std::runtime_error("KOLSKY_CH4_SET: '" + item + "' has no '='");
     note += (note.empty() ? "" : ", ") + std::string("`") + item + "`";
   }
   return note.empty() ? "" : "**Diagnostic run: scene keys overridden by KOLSKY_CH4_SET: " + note + ".**\n\n";

@@ -17,6 +17,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "common/scene_override.hpp"
 #include "core/atomic_file.hpp"
 #include "core/errors.hpp"
 #include "dem/dem_specimen_params.hpp"
@@ -102,17 +103,8 @@ int main(int argc, char** argv) {
     if (o.rolling >= 0) j["specimen"]["rolling_factor"] = o.rolling;
     if (o.diameter > 0) j["specimen"]["diameter"] = o.diameter;
     if (o.length > 0) j["specimen"]["length"] = o.length;
-    for (const std::string& s : o.sets) {
-      const auto eq = s.find('=');
-      if (eq == std::string::npos) usage(1);
-      nlohmann::json* at = &j;
-      std::string key = s.substr(0, eq);
-      for (auto dot = key.find('.'); dot != std::string::npos; dot = key.find('.')) {
-        at = &(*at)[key.substr(0, dot)];
-        key = key.substr(dot + 1);
-      }
-      (*at)[key] = nlohmann::json::parse(s.substr(eq + 1));
-    }
+    for (const std::string& s : o.sets)
+      if (!repro::set_scene_key(j, s)) usage(1);
     const std::string dir = std::filesystem::path(o.scene).parent_path().string();
     auto sc = scene::parse_scene(j, o.scene, dir);
     auto& dp = std::get<dem::DemSpecimenParams>(sc.spec.specimen);
