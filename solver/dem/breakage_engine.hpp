@@ -3,7 +3,7 @@
 // two steps. The model pieces are pure (breakage_model.hpp, apollonian.hpp, breakage_ledger.hpp);
 // this file holds the per-grain state they need and keeps it aligned with the particles through
 // DemSystem::edit's index map (which includes a locality re-sort).
-// Determinism: the decision reads the contacts in DemSystem::touching_contacts' fixed order
+// Determinism: the decision reads the contacts in DemSystem::for_each_touching_contact's fixed order
 // and the grains' own strengths, drawn from (seed, grain id) only; replacements go in
 // ascending parent index. No thread count, check order or restart enters either.
 #pragma once

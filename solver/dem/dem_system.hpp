@@ -103,18 +103,6 @@ struct DemEnergy {
   double edited = 0;
 };
 
-/// A touching contact of the current state, as models that act between steps read it
-/// (breakage, Sec. 5.2.3): grain i and its partner grain j (i < j by pair order), or a wall
-/// (j = -1, wall_slot by the WallSlots rule).
-struct TouchingContact {
-  int i = 0;
-  int j = -1;
-  int wall_slot = -1;
-  Vec3 normal;             ///< unit, from grain i towards the partner (or the wall)
-  double overlap = 0;      ///< m, > 0
-  double wall_force = 0;   ///< elastic normal force of a wall contact (N); 0 for a pair
-};
-
 class DemSystem {
  public:
   /// Precondition: `law` was built for `materials`. Throws kolsky::InputError on bad input.
@@ -211,13 +199,12 @@ class DemSystem {
   DemEnergy energy() const;
   /// Every touching contact of the last force evaluation, pairs first (in pair order), then
   /// wall contacts (in slot, particle order): one serial pass over the contact flags the sweep
-  /// wrote. Nothing between an edit or restore and the next evaluation. The visitor form
-  /// (defined in dem_contacts.hpp) calls pair(i, j, x_j - x_i, |x_j - x_i|) and
-  /// wall(i, slot, unit normal towards the wall, overlap, elastic normal force: the wall law's
-  /// spring without its dashpot, as a grain pair's Hertz force); the listing form
-  /// builds TouchingContacts from it.
+  /// wrote. Nothing between an edit or restore and the next evaluation. Defined in
+  /// dem_contacts.hpp; calls pair(i, j, x_j - x_i, |x_j - x_i|) for grain pairs (i < j by pair
+  /// order) and wall(i, slot, unit normal towards the wall, overlap, elastic normal force: the
+  /// wall law's spring without its dashpot, as a grain pair's Hertz force; slot by the
+  /// WallSlots rule).
   template <class Pair, class Wall> void for_each_touching_contact(Pair&& pair, Wall&& wall) const;
-  std::vector<TouchingContact> touching_contacts() const;
   std::size_t n_pairs() const { return pairs_.size(); }
   std::size_t n_contacts() const;       ///< touching grain pairs
   std::size_t n_wall_contacts() const;  ///< touching grain-wall contacts
