@@ -164,6 +164,15 @@ TEST(DemRest, RelaxationIsDeterministicAndRefusesBadParameters) {
     d.rest = bad;
     EXPECT_THROW(make_dem_specimen(d), InputError);
   }
+  // A compliant tube's displacement is not carried into the run: refused, before packing.
+  DemSpecimenParams compliant = chapter4_like(true, 0.0);
+  compliant.walls.tube_compliance = TubeCompliance{};
+  try {
+    make_dem_specimen(compliant);
+    ADD_FAILURE() << "relaxation with a compliant tube accepted";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.path(), "dem.rest");
+  }
 }
 
 }  // namespace

@@ -24,7 +24,14 @@ InputError rename_input_error(const InputError& e, const std::vector<InputName>&
 
 DemSpecimen make_dem_specimen(const DemSpecimenParams& p) {
   try {
-    if (p.rest) validate(*p.rest);  // before minutes of packing
+    if (p.rest) {  // before minutes of packing
+      validate(*p.rest);
+      // The relaxed grains press on the tube where it stands; a compliant tube's displacement
+      // is not handed to the run, which would start out of equilibrium.
+      if (p.walls.tube_compliance)
+        throw InputError("", "dem.rest", "needs a rigid tube: a compliant tube's displacement is not "
+                                         "carried from the relaxation into the run");
+    }
     PackingResult packed = cached_packing(p.packing, p.packing_cache).result;
     SpecimenWalls walls = p.walls;
     walls.length = p.packing.length;
