@@ -27,8 +27,15 @@ std::vector<HertzMindlinConstants> hertz_mindlin_table(const HertzMindlin& law) 
 // One clone per instruction set, chosen once at load time by the CPU (GCC function
 // multiversioning), so every thread and every run on a machine takes the same one; without
 // contraction all clones give the same bits. The build itself stays portable (no -march).
+// clang 14 (the sanitized build, fuzz/CMakeLists.txt) does not clone a function declared
+// before without the attribute: it compiled this one for AVX-512 alone, with no dispatch, and
+// it died with SIGILL on a CPU without AVX-512 (2026-12-04). It gets the portable kernel.
+#if defined(__clang__)
+void evaluate(HertzMindlinBatch& b, int count, double dt) {
+#else
 [[gnu::target_clones("avx512f", "avx2", "default")]]
 void evaluate(HertzMindlinBatch& b, int count, double dt) {
+#endif
   for (int t = 0; t < count; ++t) {
     // Geometry (dem_forces.cpp): n = d/|d|, delta = r_i + r_j - |d|, levers a = r - delta/2.
     const double dx = b.dx[t], dy = b.dy[t], dz = b.dz[t];
