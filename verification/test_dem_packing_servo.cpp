@@ -12,6 +12,7 @@
 #include "dem/packing.hpp"
 #include "psd/sampling.hpp"
 #include "song_packing.hpp"
+#include "test_support.hpp"
 
 namespace kolsky::dem {
 namespace {
@@ -81,12 +82,7 @@ TEST(DemPackingServo, DeterministicAndUnreachablePorosityRefused) {
   }
   PackingParams dense = servo(false);
   dense.porosity = 0.3;  // solid fraction 0.7: beyond random close packing
-  try {
-    generate_packing(dense);
-    ADD_FAILURE() << "porosity 0.3 accepted";
-  } catch (const InputError& e) {
-    EXPECT_EQ(e.path(), "dem.packing.porosity");
-  }
+  EXPECT_EQ(testing::input_error([&] { generate_packing(dense); }).path(), "dem.packing.porosity");
 }
 
 }  // namespace

@@ -136,14 +136,13 @@ void jam_stage(const PackingParams& in, Particles p, const std::vector<double>& 
   const double R = in.diameter / 2, L = in.length;
   const std::vector<Material> materials{in.material};
   const double n = static_cast<double>(target.size());
-  auto law_of = [&](double friction) { return jam_law(in, mean_r, friction); };
   const double mass_floor = jam_mass_floor(in, target);
   for (std::size_t i = 0; i < p.size(); ++i)
     set_radius(p, i, p.radius[i], in.material.density, mass_floor * s0 * s0 * s0);
   std::optional<DemSystem> sys;
-  sys.emplace(std::move(p), materials, law_of(in.jam_friction), packing_options(in));
+  sys.emplace(std::move(p), materials, jam_law(in, mean_r, in.jam_friction), packing_options(in));
   // Frictionless walls, so the wall zone is not held looser than the core by wall friction.
-  add_packing_walls(*sys, R, L, law_of(0.0));
+  add_packing_walls(*sys, R, L, jam_law(in, mean_r, 0.0));
   const double dt = kDemStepFraction * sys->stable_dt();
   const int sps = in.jam_steps_per_stage;
   auto stage = [&](double scale, double quench) {

@@ -9,6 +9,8 @@
 #include <type_traits>
 #include <vector>
 
+#include "core/hash.hpp"
+
 namespace kolsky::dem {
 
 namespace {
@@ -20,7 +22,9 @@ constexpr char kMagic[8] = {'K', 'P', 'A', 'C', 'K', '0', '0', '2'};
 constexpr char kMagic001[8] = {'K', 'P', 'A', 'C', 'K', '0', '0', '1'};
 
 struct Hasher {
-  std::uint64_t h = 1469598103934665603ull;  // FNV-1a 64
+  // FNV-1a 64 with the basis kolsky's cache keys were made with (core/hash.hpp): a standard
+  // basis would only regenerate every cached packing.
+  std::uint64_t h = kLegacyIdentityOffset;
   template <class T>
   void add(const T& v) {
     static_assert(std::is_trivially_copyable_v<T>);

@@ -11,17 +11,16 @@
 // gradient of a one-sided compaction out of the specimen. SI units.
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 #include <vector>
 
 #include "dem/packing_internal.hpp"
+#include "dem/packing_walls.hpp"
 #include "dem/walls.hpp"
 
 namespace kolsky::dem {
 
 void servo_wall_stage(const PackingParams& in, Particles p, const std::vector<double>& target,
                       double mean_r, PackingResult& res) {
-  constexpr double pi = std::numbers::pi;
   const double R = in.diameter / 2, L = in.length, L0 = servo_initial_length(in);
   const double travel = 0.5 * (L0 - L);  // each end wall's, m
   const double n = static_cast<double>(target.size());
@@ -31,6 +30,7 @@ void servo_wall_stage(const PackingParams& in, Particles p, const std::vector<do
   DemSystem sys(std::move(p), materials, jam_law(in, mean_r, in.jam_friction), packing_options(in));
   // Frictionless walls, as in the jammed growth: wall friction would hold the wall zone looser.
   const LinearSpring wall = jam_law(in, mean_r, 0.0);
+  // Cylinder 0, then planes 0 and 1: the indices wall_mean_stress (packing_walls.hpp) reads.
   sys.add_cylinder(CylinderWall{0, 0, R, std::nullopt, wall});
   const int bottom = sys.add_plane(PlaneWall{{0, 0, 0}, {0, 0, 1}, DrivenPlane{}, wall});
   const int top = sys.add_plane(PlaneWall{{0, 0, L0}, {0, 0, -1}, DrivenPlane{}, wall});
@@ -52,10 +52,7 @@ void servo_wall_stage(const PackingParams& in, Particles p, const std::vector<do
   auto report = [&](const char* phase, int done, int most, double value) {
     if (!in.on_progress) return;
     PackingProgress q{phase, done, most, value};
-    const double gap = L0 - 2 * offset;
-    const double szz = 0.5 * (sys.plane_force(bottom) + sys.plane_force(top)) / (pi * R * R);
-    const double srr = sys.cylinder_force(0) / (2 * pi * R * gap);
-    q.wall_stress = (szz + 2 * srr) / 3;
+    q.wall_stress = wall_mean_stress(sys, R, L0 - 2 * offset);  // over the current gap
     q.coordination = 2.0 * static_cast<double>(sys.n_contacts()) / n;
     const DemEnergy e = sys.energy();
     q.kinetic_to_elastic = e.kinetic / std::max(e.elastic, 1e-300);
@@ -92,8 +89,7 @@ void servo_wall_stage(const PackingParams& in, Particles p, const std::vector<do
   res.packing_friction = in.jam_friction;
   res.kinetic_energy = sys.particles().kinetic_energy();
   sys.compute_forces();
-  res.mean_stress = (0.5 * (sys.plane_force(bottom) + sys.plane_force(top)) / (pi * R * R) +
-                     2 * sys.cylinder_force(0) / (2 * pi * R * L)) / 3;
+  res.mean_stress = wall_mean_stress(sys, R, L);
   res.particles = sys.particles();
   for (std::size_t i = 0; i < res.particles.size(); ++i) {  // between z = 0 and L, own masses
     res.particles.x[i].z -= travel;
