@@ -133,6 +133,13 @@ TEST_F(StrainRateScene, BadSceneKeysNameTheJsonPath) {
        {"specimen", {{"model", "elastic"}, {"constrained_modulus", 230e6}}},
        {"time", {{"end", 1e-3}}}};
   expect(j, "walls.json", "loading.file", "'file' is used only when loading.kind = strain_rate");
+  j["loading"].erase("file");
+  j["loading"]["end_at_back_stress"] = 72e6;
+  expect(j, "walls.json", "loading.end_at_back_stress",
+         "'end_at_back_stress' is used only when loading.kind = strain_rate");
+  j = base();
+  j["loading"]["end_at_back_stress"] = -1.0;
+  expect(j, "walls.json", "loading.end_at_back_stress", ">= 0");
   j = base();
   j["specimen"] = {{"model", "elastic"}, {"constrained_modulus", 230e6}};
   expect(j, "walls.json", "specimen.model", "needs specimen.model = dem");

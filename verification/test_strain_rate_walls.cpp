@@ -11,12 +11,14 @@
 // Bad input: test_strain_rate_scene.cpp.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <numbers>
 
+#include "core/errors.hpp"
 #include "io/checkpoint_hdf5.hpp"
 #include "scene/scene.hpp"
 #include "shpb/simulation.hpp"
@@ -164,6 +166,48 @@ TEST_F(StrainRateWalls, PiecewiseLinearHistoryDrivesTheRun) {
     EXPECT_EQ(r.probe("face_displacement_front").value[k], 0.006 * h.strain(t));
   }
   EXPECT_EQ(r.probe("strain_rate").value.back(), 0.0);  // past the table (30 us > 20 us)
+}
+
+// loading.end_at_back_stress (issue 31, H2): the run ends, complete, at the first sample whose
+// back-wall stress reaches the level, with every sample up to there bitwise the full run's (the
+// rule only stops the loop); a level never reached leaves the run as it was.
+TEST_F(StrainRateWalls, EndAtBackStressEndsAtTheFirstSampleReachingIt) {
+  const std::string rate = "time_s,strain_rate\n0,1200\n1e-3,1200\n";
+  const scene::Scene sc = parse(rate, 30e-6, 1e-6);
+  const shpb::RunResult full = shpb::SimulatedShpb(sc.spec).run();
+  ASSERT_TRUE(full.complete) << full.failure;
+  EXPECT_TRUE(full.ended_by.empty());
+  const auto& back = full.probe("stress_back").value;
+  // The first sample past a level halfway between the largest back stress of the first half of
+  // the record and the one before it: a level the record first reaches at a known sample.
+  const std::size_t half = back.size() / 2;
+  const std::size_t top = std::max_element(back.begin(), back.begin() + half) - back.begin();
+  ASSERT_GT(top, 0u);
+  ASSERT_GT(back[top], 0.0);
+  double below = 0;
+  for (std::size_t k = 0; k < top; ++k) below = std::max(below, back[k]);
+  ASSERT_LT(below, back[top]);
+  scene::Scene cut = sc;
+  cut.spec.end_at_back_stress = 0.5 * (below + back[top]);
+  const shpb::RunResult r = shpb::SimulatedShpb(cut.spec).run();
+  ASSERT_TRUE(r.complete) << r.failure;
+  EXPECT_NE(r.ended_by.find("loading.end_at_back_stress"), std::string::npos) << r.ended_by;
+  ASSERT_EQ(r.t.size(), top + 1);
+  for (std::size_t k = 0; k <= top; ++k) {
+    EXPECT_EQ(r.t[k], full.t[k]);
+    EXPECT_EQ(r.probe("stress_back").value[k], back[k]) << k;
+  }
+  // Never reached: the run is the full one.
+  cut.spec.end_at_back_stress = 1e3 * (*std::max_element(back.begin(), back.end()) + 1.0);
+  const shpb::RunResult never = shpb::SimulatedShpb(cut.spec).run();
+  EXPECT_TRUE(never.ended_by.empty());
+  EXPECT_EQ(never.probe("stress_back").value, back);
+  // The scene key: read under the walls, refused (unused) under the bars.
+  json j = walls_scene("rate.csv", 30e-6, 1e-6);
+  j["loading"]["end_at_back_stress"] = 72e6;
+  EXPECT_EQ(scene::parse_scene(j, "walls.json", dir.str()).spec.end_at_back_stress, 72e6);
+  j["loading"]["end_at_back_stress"] = -1.0;
+  EXPECT_THROW(scene::parse_scene(j, "walls.json", dir.str()), InputError);
 }
 
 TEST_F(StrainRateWalls, FaceStressesAreTheWallForcesAndAgreeInSlowLoading) {

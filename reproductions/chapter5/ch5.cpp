@@ -42,6 +42,10 @@ nlohmann::json case_scene(const CaseSpec& spec, const std::string& dir, const st
     if (spec.fines_d_min > 0) b["fines_d_min"] = spec.fines_d_min * n;
   }
   if (spec.end_time > 0) j["time"]["end"] = spec.end_time;
+  if (!spec.loading_file.empty()) j["loading"]["file"] = spec.loading_file;
+  if (spec.end_at_back_stress >= 0) j["loading"]["end_at_back_stress"] = spec.end_at_back_stress;
+  if (!spec.grain_size_curve.empty()) s["grain_size_curve"] = spec.grain_size_curve;
+  if (spec.seed >= 0) s["seed"] = spec.seed;
   return j;
 }
 
@@ -96,6 +100,7 @@ CaseResult run_case(const CaseSpec& spec, const std::string& dir, const std::str
     c.steps = r.steps;
     c.simulated_s = r.t.empty() ? 0 : r.t.back();
     c.arrival_time = r.arrival_time;
+    c.ended_by = r.ended_by;
     if (!r.complete) throw std::runtime_error("run incomplete: " + r.failure);
     const auto a = sim.analyse(r);
     const auto& h = a.history;

@@ -33,6 +33,11 @@ struct CaseSpec {
   bool breakage = true;       ///< false: the breakage block is removed
   double end_time = -1;       ///< time.end, s
   double fines_d_min = -1;    ///< m in the *original* sand (x N in the specimen)
+  // Study variants (issue 31, H2 / H3 / seed scatter; the set itself keeps the scene's):
+  std::string loading_file;   ///< loading.file, relative to reproductions/chapter5/
+  double end_at_back_stress = -1;  ///< loading.end_at_back_stress, Pa
+  std::string grain_size_curve;    ///< specimen.grain_size_curve, relative likewise
+  long seed = -1;                  ///< specimen.seed (the packing's)
 };
 
 /// One grain-size curve of the specimen (grains + fines) at time t, in the specimen's sizes.
@@ -59,6 +64,7 @@ struct CaseResult {
   std::vector<double> gauge_t, gauge_incident, gauge_transmission;
   double arrival_time = 0;
   double coordination_final = NAN;  ///< grain contacts per grain at the end
+  std::string ended_by;  ///< set when loading.end_at_back_stress ended the run
 };
 
 /// Runs `spec` on its scene (relative paths against `dir`), with the packing cached in

@@ -46,6 +46,7 @@ io::RunRecord to_record(const scene::Scene& sc, const shpb::RunResult& r,
   rec.meta["kolsky_version"] = build_info::version();
   rec.meta["complete"] = r.complete;
   rec.meta["failure"] = r.failure;
+  if (!r.ended_by.empty()) rec.meta["ended_by"] = r.ended_by;  // loading.end_at_back_stress
   rec.meta["dt_s"] = r.dt;
   rec.meta["stable_dt_s"] = r.stable_dt;
   rec.meta["dt_final_s"] = r.dt_final;  // below dt_s when breaks refined the step
@@ -300,6 +301,7 @@ int cmd_run(const std::vector<std::string>& args) {
   if (r.dt_refinements > 0)
     std::printf("  %-26s %.6g (refined %ld times after breaks)\n", "dt_final_s", r.dt_final,
                 r.dt_refinements);
+  if (!r.ended_by.empty()) std::printf("  %-26s %s\n", "ended_by", r.ended_by.c_str());
   std::fputs(format_summary(summary).c_str(), stdout);
   if (!o.plot_dir.empty() && analysed)
     write_plots(plot::run_figures(r, analysis.waves, analysis.history, file), o.plot_dir, gnuplot, "run");

@@ -285,8 +285,10 @@ Scene parse_scene(const nlohmann::json& j, const std::string& file, const std::s
   shpb::ExperimentSpec& e = s.spec;
   e.title = r.text("title");
   const bool walls = r.text("loading.kind") == "strain_rate";
-  if (walls) e.strain_rate = read_strain_rate_loading(r, base_dir);
-  else read_bars_and_pulse(r, base_dir, e);
+  if (walls) {
+    e.strain_rate = read_strain_rate_loading(r, base_dir);
+    e.end_at_back_stress = r.number("loading.end_at_back_stress");
+  } else read_bars_and_pulse(r, base_dir, e);
   e.specimen = read_specimen(r, base_dir);
   const auto* dem_specimen = std::get_if<dem::DemSpecimenParams>(&e.specimen);
   if (walls) {

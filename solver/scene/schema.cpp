@@ -103,6 +103,12 @@ std::vector<ParamSpec> build_table() {
         "CSV table time_s,strain_rate (1/s, compression +), time strictly increasing from >= 0; "
         "rate linear between rows, 0 after the last row; strain by Eq. 5.1",
         "loading.kind=strain_rate");
+  s.add(VT::number, "loading.end_at_back_stress", shpb::ExperimentSpec{}.end_at_back_stress, "Pa",
+        kNonNegative,
+        "0: the run lasts time.end; > 0: it ends (complete) at the first probe sample whose "
+        "back-wall stress reaches this, or at time.end if it never does (a test loaded until a "
+        "stress: Sec. 5.3.1 compares the Wang specimens at 72 MPa)",
+        "loading.kind=strain_rate");
 
   const bar::ColumnParams col;
   s.add(VT::choice, "specimen.model", kRequired, "-", kNoRange,

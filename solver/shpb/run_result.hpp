@@ -20,6 +20,9 @@ struct RunResult {
   std::vector<Probe> probes;   ///< in the order the assembly declared them (the HDF5 order)
   bool complete = true;
   std::string failure;         ///< why the run stopped early (empty when complete)
+  /// Set when a complete run ended before time.end by its scene's rule
+  /// (loading.end_at_back_stress): what was reached, and when.
+  std::string ended_by;
   double dt = 0, stable_dt = 0, arrival_time = 0;  ///< dt, stable_dt: as planned (s)
   long steps = 0;
   /// The step at the end (s) and how often the run refined it (time_loop::refine: a break

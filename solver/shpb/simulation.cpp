@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <iomanip>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 
@@ -182,6 +183,13 @@ RunResult SimulatedShpb::run(Progress* progress, const RunControl& control) {
   return std::visit([&](auto& a) { return run_on(a, progress, control); }, assembly_);
 }
 
+namespace {
+/// Thrown by the sampler when loading.end_at_back_stress is reached; caught by run_on alone.
+struct EndRuleReached : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+}  // namespace
+
 template <class A>
 RunResult SimulatedShpb::run_on(A& assembly, Progress* progress, const RunControl& control) {
   RunResult r;
@@ -206,6 +214,14 @@ RunResult SimulatedShpb::run_on(A& assembly, Progress* progress, const RunContro
   RunControl hooks = control;
   hooks.snapshot_every = control.snapshot_every * s.ticks_per_planned_step;
   const double safety = policy(spec_).safety_factor;
+  // loading.end_at_back_stress: the probe it watches (only strain-rate walls record it).
+  std::optional<std::size_t> end_probe;
+  if (spec_.end_at_back_stress > 0) {
+    for (std::size_t k = 0; k < records.size(); ++k)
+      if (records[k].name == "stress_back") end_probe = k;
+    if (!end_probe)
+      throw InputError("", "loading.end_at_back_stress", "this assembly records no back-wall stress (loading.kind = strain_rate only)");
+  }
   auto step = [&](long n, double t, double dt) {
     if (control.stop && *control.stop) {
       std::ostringstream msg;
@@ -241,6 +257,12 @@ RunResult SimulatedShpb::run_on(A& assembly, Progress* progress, const RunContro
     assembly.observe(t);  // throws before anything of this sample is recorded
     r.t.push_back(t);
     for (std::size_t k = 0; k < records.size(); ++k) r.probes[k].value.push_back(records[k].sample(t));
+    if (end_probe && r.probes[*end_probe].value.back() >= spec_.end_at_back_stress) {
+      std::ostringstream msg;
+      msg << std::setprecision(6) << "back-wall stress " << r.probes[*end_probe].value.back()
+          << " Pa reached loading.end_at_back_stress at t = " << t << " s";
+      throw EndRuleReached(msg.str());
+    }
   };
   try {
     time_loop::run_loop_from(s, first, step, sample, progress);
@@ -252,6 +274,9 @@ RunResult SimulatedShpb::run_on(A& assembly, Progress* progress, const RunContro
     if (progress) progress->finish();
     r.complete = false;
     r.failure = e.what();
+  } catch (const EndRuleReached& e) {  // the scene's own end: complete
+    if (progress) progress->finish();
+    r.ended_by = e.what();
   }
   r.dt_final = s.dt;
   r.dt_refinements = s.refinements;

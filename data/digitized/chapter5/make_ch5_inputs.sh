@@ -5,6 +5,9 @@
 #   huang2013_psd_tail.csv                Fig. 5.9, the original curve with its tail (for the
 #                                         downscaled comparison, Sec. 5.3.2: tail added back)
 #   wang2018_strain_rate_reconstructed.csv  Fig. 5.3 (peak 1200/s)
+#   wang2018_psd_dmax_l10.csv             the Wang curve's shape and count, top size L/10 (H3)
+#   wang2018_strain_rate_held.csv         the same rise, the peak held to 400 us (strain 0.47):
+#                                         run with loading.end_at_back_stress (issue 31, H2)
 #   huang2013_strain_rate_700_reconstructed.csv  the 700/s history (no figure)
 # Each has a .meta.json beside it saying from what and how.
 #
@@ -24,7 +27,7 @@
 #         grains at N = 2.5, n = 0.40 (assumed: the text gives none), 10 x 37.2 mm.
 # Strain-rate histories: smoothstep rise to the peak, plateau, smoothstep fall to zero
 # (the usual shape of a shaped-pulse sand test); durations in the .meta.json.
-# Usage: bash make_ch5_inputs.sh   (writes the five CSVs into this folder)
+# Usage: bash make_ch5_inputs.sh   (writes the seven CSVs into this folder)
 set -euo pipefail
 cd "$(dirname "$0")"
 
@@ -67,6 +70,16 @@ curve() {
 song_lo=$(awk 'BEGIN{printf "%.6f", 75/335.29}'); song_hi=$(awk 'BEGIN{printf "%.6f", 600/335.29}')
 curve wang 3.219 "$song_lo" "$song_hi" 0 1 43642 0.41 0.005 0.015 csv > wang2018_psd_reconstructed.csv
 curve wang 3.219 "$song_lo" "$song_hi" 0 1 43642 0.41 0.005 0.015 count >&2
+# H3 (issue 31): the same shape and count with the top size at L/10 = 0.5 mm, the maximum the
+# text calls essential (Sec. 3.2), against the reconstruction's 0.78 mm (L/6.4): d_hi / d_c is
+# iterated until the solved d_c puts d_hi at 0.5 mm (12 passes: 0.5000 mm, d50 0.371 mm).
+hi_l10=$song_hi
+for pass in $(seq 1 12); do
+  dc_l10=$(curve wang 3.219 "$song_lo" "$hi_l10" 0 1 43642 0.41 0.005 0.015 count | sed 's/.*d_c=\([^ ]*\) m.*/\1/')
+  hi_l10=$(awk -v dc="$dc_l10" 'BEGIN{printf "%.6f", 0.5e-3 / dc}')
+done
+curve wang 3.219 "$song_lo" "$hi_l10" 0 1 43642 0.41 0.005 0.015 csv > wang2018_psd_dmax_l10.csv
+curve wang_dmax_l10 3.219 "$song_lo" "$hi_l10" 0 1 43642 0.41 0.005 0.015 count >&2
 # Huang: solve the cut curve's scale, then write the same curve uncut (the tail) with that d_c.
 curve huang 3.219 0.01 2 1e-4 2.5 37595 0.40 0.010 0.0372 csv > huang2013_psd_reconstructed.csv
 curve huang 3.219 0.01 2 1e-4 2.5 37595 0.40 0.010 0.0372 count >&2
@@ -91,4 +104,5 @@ rate() {
       printf "%.6e,%.6g\n", t, r } }'
 }
 rate wang 1200 20e-6 130e-6 150e-6 1e-6 > wang2018_strain_rate_reconstructed.csv
+rate wang 1200 20e-6 400e-6 420e-6 1e-6 > wang2018_strain_rate_held.csv
 rate huang 700 20e-6 280e-6 300e-6 1e-6 > huang2013_strain_rate_700_reconstructed.csv
