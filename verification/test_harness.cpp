@@ -356,7 +356,9 @@ TEST(HarnessReport, GnuplotRendersPngWithBandsAndPoints) {
   p.ylabel = "stress [MPa]";
   p.series.push_back({"simulated", {0, 0.01, 0.02}, {0, 5, 12}, "lines"});
   p.bands.push_back({"tolerance", {0, 0.01, 0.02}, {0, 4, 10}, {0, 6, 14}});
-  p.reference_points.push_back({"Song 2009", {0.01, 0.02}, {5.5, 11}, {0.5, 1.0}});
+  p.reference_points.push_back({"Song 2009", {0.01, 0.02}, {5.5, 11}, {0.5, 1.0}, {}});
+  // Points named one by one (the Chapter 5 speed figure labels each with its N).
+  p.reference_points.push_back({"named", {0.005, 0.015}, {3, 8}, {}, {"N = 1.5", "it's N = 2"}});
   const PlotResult res = render_plot(p, dir.str(), gnuplot);
   ASSERT_TRUE(res.ok) << res.message;
   EXPECT_GT(fs::file_size(dir.file("stress_strain.png")), 1000u);
@@ -364,6 +366,10 @@ TEST(HarnessReport, GnuplotRendersPngWithBandsAndPoints) {
   EXPECT_NE(gp.find("pngcairo size 900,600"), std::string::npos);
   EXPECT_NE(gp.find("filledcurves"), std::string::npos);
   EXPECT_NE(gp.find("yerrorbars"), std::string::npos);
+  EXPECT_NE(gp.find("set label 'N = 1.5' at 0.005,3 offset"), std::string::npos) << gp;
+  EXPECT_NE(gp.find("set label 'it''s N = 2' at 0.015,8 offset"), std::string::npos) << gp;
+  p.reference_points.back().point_labels.pop_back();  // one label for two points
+  EXPECT_THROW(render_plot(p, dir.str(), gnuplot), std::invalid_argument);
   EXPECT_THROW(render_plot({"../escape.png", "", "", "", {}, {}, {}, false, false}, dir.str(), gnuplot),
                std::invalid_argument);
 }

@@ -129,7 +129,7 @@ int main(int argc, char** argv) {
   ss_plot.series = {{"kolsky (stand-in, D = 230 MPa)", ss.x, ss.y},
                     {"front face", ss.x, scaled(std::vector<double>(h.stress_front.begin(), h.stress_front.begin() + load_end), 1e-6), "dashed"}};
   ss_plot.bands = {{"230 MPa +-5%", {0.0, 0.14}, {0.0, 0.14 * 230 * 0.95}, {0.0, 0.14 * 230 * 1.05}}};
-  ss_plot.reference_points = {{"Sec. 2.3.4 slope 230 MPa", {0.02, 0.06, 0.10}, {4.6, 13.8, 23.0}, {}}};
+  ss_plot.reference_points = {{"Sec. 2.3.4 slope 230 MPa", {0.02, 0.06, 0.10}, {4.6, 13.8, 23.0}, {}, {}}};
   harness::Plot alpha_plot{"alpha.png", "Stress non-uniformity alpha(t), Eq. 2.15", "t (us)", "alpha (-)", {}, {}, {}};
   alpha_plot.series = {{"alpha", us, h.alpha}, {"0.05", {0, us.back()}, {0.05, 0.05}, "dashed"}};
   alpha_plot.logy = true;

@@ -83,7 +83,7 @@ void huang_study(Study& s) {
   for (std::size_t k = 0; k < st.size(); ++k)
     if (st[k] > 1e5) line.x.push_back(st[k] / 1e6), line.y.push_back(br[k]);
   bp.series.push_back(line);
-  if (std::isfinite(y)) bp.reference_points.push_back({fmt("bilinear yield %.1f MPa", y / 1e6), {y / 1e6}, {0}, {}});
+  if (std::isfinite(y)) bp.reference_points.push_back({fmt("bilinear yield %.1f MPa", y / 1e6), {y / 1e6}, {0}, {}, {}});
   s.plots->push_back(bp);
   harness::Plot ss = figure("huang_stress_strain.png", "Huang: back-face stress against strain (Fig. 5.10)", "strain (Eq. 5.1)", "stress (MPa)");
   harness::PlotSeries sc = series("N = " + fmt("%g", spec.upscale), c.strain);

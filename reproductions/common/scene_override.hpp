@@ -1,5 +1,7 @@
 // One scene override "dotted.key=JSON" (the studies' --set, the Chapter 4 driver's
-// KOLSKY_CH4_SET): the value parsed as JSON replaces the key, creating the objects on its path.
+// KOLSKY_CH4_SET): the value parsed as JSON replaces the key, creating the objects on its path;
+// the value null removes the key (a key another override makes unused, e.g. the tube_* keys
+// of an FE tube set to rigid).
 #pragma once
 #include <string>
 
@@ -19,7 +21,8 @@ inline bool set_scene_key(nlohmann::json& scene, const std::string& item) {
     at = &(*at)[key.substr(0, dot)];
     key = key.substr(dot + 1);
   }
-  (*at)[key] = value;
+  if (value.is_null()) at->erase(key);
+  else (*at)[key] = value;
   return true;
 }
 

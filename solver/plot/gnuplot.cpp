@@ -154,7 +154,7 @@ PlotResult render_plot(const Plot& p, const std::string& out_dir, const std::str
   const fs::path src = fs::path(out_dir) / "plots_src";
   fs::create_directories(src);
 
-  std::string dat, plot_cmd;
+  std::string dat, plot_cmd, annotations;
   size_t block = 0, colour = 0;
   // One data block per element; empty ones are left out because gnuplot refuses an empty plot.
   const auto add_block = [&](const std::string& header, const std::string& rows,
@@ -189,6 +189,18 @@ PlotResult render_plot(const Plot& p, const std::string& out_dir, const std::str
     }
     add_block(std::string("reference x y") + (bars ? " yerr: " : ": ") + r.label, rows,
               bars ? "1:2:3 with yerrorbars pt 7 ps 1.2" : "1:2 with points pt 7 ps 1.2", r.label);
+    if (r.point_labels.empty()) continue;
+    if (r.point_labels.size() != r.x.size())
+      throw std::invalid_argument("plot " + p.file + ": '" + r.label + "' has " + std::to_string(r.x.size()) +
+                                  " points and " + std::to_string(r.point_labels.size()) + " point labels");
+    for (size_t i = 0; i < r.x.size(); ++i) {
+      if (!std::isfinite(r.x[i]) || !std::isfinite(r.y[i])) continue;  // not drawn either
+      std::string at;
+      put(at, r.x[i]);
+      at += ',';
+      put(at, r.y[i]);
+      annotations += "set label " + gnuplot_quote(r.point_labels[i]) + " at " + at + " offset 0.8,0.6\n";
+    }
   }
 
   std::string gp = "# " + p.title + "\n# Regenerate: run `gnuplot " + stem +
@@ -201,6 +213,7 @@ PlotResult render_plot(const Plot& p, const std::string& out_dir, const std::str
   // A log axis labels decades as 1e-05 ... 10, not gnuplot's default 0.000010 ... 10.000000.
   if (p.logx) gp += "set logscale x\nset format x '%g'\n";
   if (p.logy) gp += "set logscale y\nset format y '%g'\n";
+  gp += annotations;
   gp += (plot_cmd.empty() ? "# nothing to plot" : plot_cmd) + "\n";
   write_file_atomic((src / (stem + ".dat")).string(), dat);
   write_file_atomic((src / (stem + ".gp")).string(), gp);

@@ -23,10 +23,12 @@ struct PlotBand {
   std::vector<double> x, lo, hi;
 };
 
-/// Reference points, with symmetric y error bars when yerr is non-empty (same length as x).
+/// Reference points, with symmetric y error bars when yerr is non-empty (same length as x),
+/// and each point annotated with its text when point_labels is non-empty (same length).
 struct PlotPoints {
   std::string label;
   std::vector<double> x, y, yerr;
+  std::vector<std::string> point_labels;
 };
 
 struct Plot {
