@@ -110,6 +110,15 @@ int main(int argc, char** argv) {
     M.note("ch3.face_alpha_shifted", "max |front - back| / mean face stress from back stress " + mpa(x.ringing_stress) +
                                          " MPa (t = " + fmt("%.0f us", s.m.ringing_end * 1e6) + " after arrival) to 13 MPa; largest gap " +
                                          mpa(s.m.face_gap_max) + " MPa");
+    // Companion of the slope known deviations (README, "The preparation study, H1"): the
+    // network the original specimen starts with (full scale only: studies_full.json
+    // "companions").
+    if (x.studies.contains("companions")) {
+      if (o.c.run.has_probe("coordination_number") && !o.c.run.probe("coordination_number").value.empty()) {
+        M.scalar("ch3.initial_coordination", o.c.run.probe("coordination_number").value.front());
+        M.note("ch3.initial_coordination", "grain contacts per grain of the original specimen at t = 0, as packed");
+      }
+    }
     M.scalar("ch3.porosity", o.c.porosity);
     M.scalar("ch3.strain_rate", o.m.strain_rate);
     M.scalar("ch3.off_axis_fraction", f.c.off_axis);

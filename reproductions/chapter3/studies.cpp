@@ -216,6 +216,23 @@ void normk_studies(Context& x, double slope_full_at_printed) {
   x.m->note("ch3.slope_printed_modulus", pc.ok ? "E = 70 MPa, NORMK 0.07 on the " + bc.at("level_label").get<std::string>()
                                                : "run failed: " + pc.failure);
   md += "Full model at the printed NORMK (70 GPa reading): slope " + mpa(slope_full_at_printed) + " MPa.\n";
+  // Companion of the slope known deviations: a network's stiffness does not depend on N, the
+  // compaction of a specimen without one does (README, "What the slope's N-dependence is made
+  // of"); the same level and NORMK at a coarser N.
+  if (x.studies.contains("companions")) {
+    const auto& cp = x.studies.at("companions").at("n_dependence");
+    nlohmann::json p6 = level_patch;
+    p6.merge_patch(cp.at("patch"));
+    p6["specimen"]["normk"] = printed;
+    const CaseResult c6 = run_case(make_case(x, cp.at("label").get<std::string>(), p6));
+    const double s6 = measure(x, c6).slope, s3 = slope_of(printed);
+    x.m->scalar("ch3.slope_n_dependence", s6 / s3);
+    x.m->note("ch3.slope_n_dependence", cp.at("label").get<std::string>() + ": " + mpa(s6) + " MPa against " + mpa(s3) +
+                                            " MPa at the set's N, NORMK " + fmt("%.4g", printed) + ", " +
+                                            bc.at("level_label").get<std::string>());
+    md += "Same level and NORMK, " + cp.at("label").get<std::string>() + ": slope " + mpa(s6) + " MPa (" +
+          std::to_string(c6.grains) + " grains) against " + mpa(s3) + " MPa.\n";
+  }
   // The finder's path, for the plot.
   harness::Plot cp{"normk_backcalc.png", "Slope 2-6 % vs NORMK (" + bc.at("level_label").get<std::string>() + ")", "NORMK (-)",
                    "slope (MPa)", {}, {}, {}};

@@ -106,6 +106,7 @@ psd::GrainSizeCurve read_curve(const std::string& path) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  std::setvbuf(stdout, nullptr, _IOLBF, 0);  // progress lines reach a log file as they come
   const Options o = parse(argc, argv);
   const std::string dir = std::string(KOLSKY_SOURCE_DIR) + "/reproductions/chapter5";
   const std::string stem = o.out + "/" + o.label;
@@ -131,7 +132,6 @@ int main(int argc, char** argv) {
   spec.seed = o.seed;
   std::printf("%s: N = %g, sigma_lim0 = %.4g GPa, loading %s, end at %.3g MPa or %.3g us\n", o.label.c_str(),
               o.upscale, spec.sigma_lim0 / 1e9, o.loading.c_str(), o.end_at / 1e6, o.end_time * 1e6);
-  std::fflush(stdout);
   const ch5::CaseResult c = ch5::run_case(spec, dir, o.cache);
   if (!c.ok) {
     std::fprintf(stderr, "%s: failed: %s\n", o.label.c_str(), c.failure.c_str());
