@@ -5,7 +5,9 @@
 # same count at top size L/10; at N = 1 and 1.5 (the text's pair; N = 1.5 compared with N = 1) and
 # at N = 2 over three packing seeds (the scatter). One OpenMP thread per case; resumable: a case
 # whose summary exists is skipped, packings are cached in OUTDIR/packing_cache.
-# Usage: scripts/study-wang-loading.sh BUILD OUTDIR [seeds|pair]   (default: both, seeds first)
+# prep: the two packing procedures that keep something at rest (the README's H1 census), relaxed
+# and loaded the same way at N = 2 (their packings cached with the census's, OUTDIR/../study-preparation).
+# Usage: scripts/study-wang-loading.sh BUILD OUTDIR [seeds|pair|prep]   (default: all three)
 set -euo pipefail
 build=$1 out=$2 part=${3:-all}
 study="$build/reproductions/study_wang_loading"
@@ -17,6 +19,13 @@ if [[ $part == all || $part == seeds ]]; then
     run --label "n2_seed${seed}" --upscale 2 --seed "$seed"
     run --label "n2_l10_seed${seed}" --upscale 2 --seed "$seed" --psd "$l10"
   done
+fi
+if [[ $part == all || $part == prep ]]; then
+  prep_cache="$(dirname "$out")/study-preparation/packing_cache"
+  run --label n2_jammed_locked_relaxed --upscale 2 --cache "$prep_cache" \
+      --set specimen.packing_lock_rotation=true --set specimen.relax_to_rest=true
+  run --label n2_servo_free_relaxed --upscale 2 --cache "$prep_cache" \
+      --set 'specimen.packing="servo_walls"' --set specimen.relax_to_rest=true
 fi
 if [[ $part == all || $part == pair ]]; then
   run --label n1 --upscale 1

@@ -38,6 +38,7 @@ struct CaseSpec {
   double end_at_back_stress = -1;  ///< loading.end_at_back_stress, Pa
   std::string grain_size_curve;    ///< specimen.grain_size_curve, relative likewise
   long seed = -1;                  ///< specimen.seed (the packing's)
+  std::vector<std::string> sets;   ///< "dotted.key=JSON" overrides (common/scene_override.hpp)
 };
 
 /// One grain-size curve of the specimen (grains + fines) at time t, in the specimen's sizes.

@@ -118,6 +118,16 @@ int main(int argc, char** argv) {
                   r->kinetic_to_elastic, r->coordination_before, r->coordination_after,
                   r->elastic_before, r->elastic_after);
     dem::DemSystem& sys = s.coupled_system();
+    {  // Whole cylinder against its interior (issue 31, H1: the loose layer at the walls)
+      const auto& g = sys.particles();
+      double d_mean = 0;
+      for (double r : g.radius) d_mean += 2 * r / g.size();
+      const double D = dp.packing.diameter, L = dp.packing.length;
+      std::printf("porosity (1e6 samples, +-5e-4): whole %.4f, interior %.4f (1 mean diameter from the walls), "
+                  "%.4f (2); mean diameter %.3g m\n",
+                  dem::interior_porosity(g, D, L, 0.0), dem::interior_porosity(g, D, L, d_mean),
+                  dem::interior_porosity(g, D, L, 2 * d_mean), d_mean);
+    }
     const double dt = dem::kDemStepFraction * sys.stable_dt();
     std::printf("%zu grains, dt %.3e s, hold %.0f us\n", sys.particles().size(), dt, o.hold * 1e6);
     std::string table =

@@ -8,7 +8,7 @@
 // whose back stress reaches 20, 43, 60 and 72 MPa, not at an end time.
 //   study_wang_loading --out DIR --label NAME [--upscale N] [--sigma PA] [--loading FILE]
 //                      [--end-at PA] [--end-time S] [--psd FILE] [--seed K] [--cache DIR]
-//                      [--reference DIR/NAME]
+//                      [--reference DIR/NAME] [--set dotted.key=JSON ...]
 // Writes DIR/NAME.json (summary), DIR/NAME_history.csv (t, strain, back stress, grains, broken
 // parents, B_r) and DIR/NAME_psd<S>.csv (downscaled curve at S MPa).
 #include <cmath>
@@ -33,6 +33,7 @@ struct Options {
                           reference;
   double upscale = 1, sigma = -1, end_at = 72e6, end_time = 420e-6;
   long seed = -1;
+  std::vector<std::string> sets;  // --set dotted.key=JSON
 };
 
 // Printed values (targets.md 5e: Sec. 5.3.1) and the stresses Fig. 5.7 compares curves at.
@@ -43,7 +44,7 @@ constexpr double kStresses[] = {20e6, 43e6, 60e6, 72e6};
   std::fprintf(code ? stderr : stdout,
                "usage: study_wang_loading --out DIR --label NAME [--upscale N] [--sigma PA]\n"
                "         [--loading FILE] [--end-at PA] [--end-time S] [--psd FILE] [--seed K]\n"
-               "         [--cache DIR] [--reference DIR/NAME]\n"
+               "         [--cache DIR] [--reference DIR/NAME] [--set dotted.key=JSON ...]\n"
                "Runs the Chapter 5 Wang scene with the loading file (default: the peak rate held,\n"
                "wang2018_strain_rate_held.csv) until the back stress reaches --end-at (default\n"
                "72e6 Pa; 0: --end-time only) and reads counts, B_r and the downscaled grain-size\n"
@@ -72,6 +73,7 @@ Options parse(int argc, char** argv) {
     else if (a == "--seed") o.seed = std::stol(value());
     else if (a == "--cache") o.cache = value();
     else if (a == "--reference") o.reference = value();
+    else if (a == "--set") o.sets.push_back(value());
     else usage(1);
   }
   if (o.out.empty() || o.label.empty() || !(o.upscale >= 1)) usage(1);
@@ -130,6 +132,7 @@ int main(int argc, char** argv) {
   spec.end_at_back_stress = o.end_at;
   spec.grain_size_curve = o.psd;
   spec.seed = o.seed;
+  spec.sets = o.sets;
   std::printf("%s: N = %g, sigma_lim0 = %.4g GPa, loading %s, end at %.3g MPa or %.3g us\n", o.label.c_str(),
               o.upscale, spec.sigma_lim0 / 1e9, o.loading.c_str(), o.end_at / 1e6, o.end_time * 1e6);
   const ch5::CaseResult c = ch5::run_case(spec, dir, o.cache);
@@ -144,6 +147,7 @@ int main(int argc, char** argv) {
   j["loading"] = o.loading;
   j["grain_size_curve"] = o.psd;
   j["seed"] = o.seed;
+  j["sets"] = o.sets;
   j["end_at_back_stress"] = o.end_at;
   j["ended_by"] = c.ended_by;
   j["wall_s"] = c.wall_s;

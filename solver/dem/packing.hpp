@@ -165,4 +165,14 @@ std::pair<double, double> coordination_without_rattlers(const Particles& p, doub
 /// -1/2). Walls are not counted.
 double fabric_anisotropy(const Particles& p, double diameter, double length);
 
+/// Porosity of the interior of the specimen cylinder (diameter, length): the part farther than
+/// `margin` from the tube and from both end walls, estimated from `samples` points drawn
+/// uniformly in it (xoshiro256**, `seed`): 1 - the fraction inside a grain. The standard error
+/// is sqrt(n (1 - n) / samples). Grains pack looser against a wall (a layer about half a
+/// diameter thick), so a specimen's interior is denser than its whole volume: issue 31, H1,
+/// "porosity counted over the whole sleeve". Throws std::invalid_argument when the margin
+/// leaves no interior or samples < 1.
+double interior_porosity(const Particles& p, double diameter, double length, double margin,
+                         long samples = 1000000, std::uint64_t seed = 1);
+
 }  // namespace kolsky::dem

@@ -2,9 +2,11 @@
 // rattlers, the Hertz contact-virial stress and the porosity.
 #include <cmath>
 #include <numbers>
+#include <stdexcept>
 #include <utility>
 #include <vector>
 
+#include "core/rng.hpp"
 #include "dem/packing_internal.hpp"
 #include "psd/sampling.hpp"
 
@@ -30,6 +32,32 @@ double max_packing_overlap(const Particles& p, double diameter, double length) {
     grid.insert(c, static_cast<int>(i));
   }
   return worst;
+}
+
+double interior_porosity(const Particles& p, double diameter, double length, double margin, long samples,
+                         std::uint64_t seed) {
+  const double R = diameter / 2 - margin, z0 = margin, z1 = length - margin;
+  if (!(R > 0 && z1 > z0)) throw std::invalid_argument("interior_porosity: the margin leaves no interior");
+  if (samples < 1) throw std::invalid_argument("interior_porosity: samples must be >= 1");
+  double r_max = 0;
+  for (double r : p.radius) r_max = std::max(r_max, r);
+  if (p.size() == 0) return 1.0;
+  // Cells of one largest diameter: a point inside grain q lies in q's cell or a neighbour.
+  CellGrid grid(2 * r_max, diameter / 2, length);
+  for (std::size_t i = 0; i < p.size(); ++i) grid.insert(p.x[i], static_cast<int>(i));
+  Xoshiro256ss rng(seed);
+  long solid = 0;
+  for (long k = 0; k < samples; ++k) {
+    Vec3 s;  // uniform in the interior disc x [z0, z1]: rejection from its square
+    do {
+      s.x = R * (2 * rng.uniform_open() - 1);
+      s.y = R * (2 * rng.uniform_open() - 1);
+    } while (s.x * s.x + s.y * s.y > R * R);
+    s.z = z0 + (z1 - z0) * rng.uniform_open();
+    const bool inside = !grid.visit(s, [&](int q) { return norm2(p.x[q] - s) > p.radius[q] * p.radius[q]; });
+    solid += inside ? 1 : 0;
+  }
+  return 1.0 - static_cast<double>(solid) / static_cast<double>(samples);
 }
 
 namespace {
