@@ -18,6 +18,7 @@
 #include <nlohmann/json.hpp>
 
 #include "common/scene_override.hpp"
+#include "common/study_args.hpp"
 #include "core/atomic_file.hpp"
 #include "core/errors.hpp"
 #include "dem/dem_specimen_params.hpp"
@@ -48,24 +49,21 @@ struct Options {
 
 Options parse(int argc, char** argv) {
   Options o;
-  for (int k = 1; k < argc; ++k) {
-    const std::string a = argv[k];
-    auto value = [&]() -> std::string {
-      if (k + 1 >= argc) usage(1);
-      return argv[++k];
-    };
+  repro::FlagReader r(argc, argv, usage);
+  while (r.next()) {
+    const std::string& a = r.arg();
     if (a == "--help" || a == "-h") usage(0);
-    else if (a == "--relax") o.relax = value();
-    else if (a == "--hold") o.hold = std::stod(value());
-    else if (a == "--every") o.every = std::stod(value());
-    else if (a == "--cache") o.cache = value();
-    else if (a == "--upscale") o.upscale = std::stod(value());
-    else if (a == "--csv") o.csv = value();
-    else if (a == "--relax-steps") o.relax_steps = std::stoi(value());
-    else if (a == "--set") o.sets.push_back(value());
-    else if (a == "--rolling") o.rolling = std::stod(value());
-    else if (a == "--diameter") o.diameter = std::stod(value());
-    else if (a == "--length") o.length = std::stod(value());
+    else if (a == "--relax") o.relax = r.value();
+    else if (a == "--hold") o.hold = r.number();
+    else if (a == "--every") o.every = r.number();
+    else if (a == "--cache") o.cache = r.value();
+    else if (a == "--upscale") o.upscale = r.number();
+    else if (a == "--csv") o.csv = r.value();
+    else if (a == "--relax-steps") o.relax_steps = static_cast<int>(r.integer());
+    else if (a == "--set") o.sets.push_back(r.value());
+    else if (a == "--rolling") o.rolling = r.number();
+    else if (a == "--diameter") o.diameter = r.number();
+    else if (a == "--length") o.length = r.number();
     else if (o.scene.empty() && a[0] != '-') o.scene = a;
     else usage(1);
   }

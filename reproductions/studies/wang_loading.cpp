@@ -22,6 +22,7 @@
 #include <nlohmann/json.hpp>
 
 #include "chapter5/ch5.hpp"
+#include "common/study_args.hpp"
 #include "core/atomic_file.hpp"
 
 namespace {
@@ -55,25 +56,22 @@ constexpr double kStresses[] = {20e6, 43e6, 60e6, 72e6};
 
 Options parse(int argc, char** argv) {
   Options o;
-  for (int k = 1; k < argc; ++k) {
-    const std::string a = argv[k];
-    auto value = [&]() -> std::string {
-      if (k + 1 >= argc) usage(1);
-      return argv[++k];
-    };
+  repro::FlagReader r(argc, argv, usage);
+  while (r.next()) {
+    const std::string& a = r.arg();
     if (a == "--help" || a == "-h") usage(0);
-    else if (a == "--out") o.out = value();
-    else if (a == "--label") o.label = value();
-    else if (a == "--upscale") o.upscale = std::stod(value());
-    else if (a == "--sigma") o.sigma = std::stod(value());
-    else if (a == "--loading") o.loading = value();
-    else if (a == "--end-at") o.end_at = std::stod(value());
-    else if (a == "--end-time") o.end_time = std::stod(value());
-    else if (a == "--psd") o.psd = value();
-    else if (a == "--seed") o.seed = std::stol(value());
-    else if (a == "--cache") o.cache = value();
-    else if (a == "--reference") o.reference = value();
-    else if (a == "--set") o.sets.push_back(value());
+    else if (a == "--out") o.out = r.value();
+    else if (a == "--label") o.label = r.value();
+    else if (a == "--upscale") o.upscale = r.number();
+    else if (a == "--sigma") o.sigma = r.number();
+    else if (a == "--loading") o.loading = r.value();
+    else if (a == "--end-at") o.end_at = r.number();
+    else if (a == "--end-time") o.end_time = r.number();
+    else if (a == "--psd") o.psd = r.value();
+    else if (a == "--seed") o.seed = r.integer();
+    else if (a == "--cache") o.cache = r.value();
+    else if (a == "--reference") o.reference = r.value();
+    else if (a == "--set") o.sets.push_back(r.value());
     else usage(1);
   }
   if (o.out.empty() || o.label.empty() || !(o.upscale >= 1)) usage(1);
