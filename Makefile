@@ -24,7 +24,7 @@ help:
 	@echo "  make reproduce-<set>   one set: $(SETS)"
 	@echo "  make reproduce-chapter2  Chapter 2 (EOS back-calculation, equilibrium, water content; ~5 min)"
 	@echo "  make reproduce-chapter4  Chapter 4 DEM SHPB, N = 2: 4 runs, the k calibration, upscaling and seed studies (~21 min from scratch on two threads; see reproductions/chapter4/README.md)"
-	@echo "  make reproduce-chapter5  Chapter 5 DEM with breakage: Wang, Huang, Song, sigma_lim0(N) back-calculation (48 min on two cores from scratch; see reproductions/chapter5/README.md)"
+	@echo "  make reproduce-chapter5  Chapter 5 DEM with breakage: Wang (loaded to 72 MPa), Huang, Song, sigma_lim0(N) back-calculation (48 min on two cores from scratch before the 72 MPa loading, longer since: see reproductions/chapter5/README.md)"
 	@echo "  make reproduce-chapter3  Chapter 3 coupled FE-DEM SHPB, N = 3: grain-size cases, friction, model levels, NORMK back-calculation (~8 min on one core; see reproductions/chapter3/README.md)"
 	@echo "  make study-at-rest  issue 31 item 0: the Chapter 4 specimen held at rest, as packed and relaxed (N = 4, 3, 2; ~15 min) -> $(BUILD)/study-at-rest/"
 	@echo "  make study-wang-loading  issue 31 H2/H3: Wang loaded to 72 MPa, reconstructed and L/10 top size (N = 1, 1.5, 2 x 3 seeds; ~2 h on two cores) -> $(BUILD)/study-wang/"
