@@ -21,6 +21,9 @@ struct DriverArgs {
 };
 
 inline DriverArgs parse_driver_args(int argc, char** argv, const std::string& set) {
+  // Progress lines reach a log file as they are printed (a full set runs for up to an hour;
+  // block-buffered, its log showed nothing for tens of minutes).
+  std::setvbuf(stdout, nullptr, _IOLBF, 0);
   DriverArgs a;
   a.set = set;
   a.out_dir = "reports/" + set;
