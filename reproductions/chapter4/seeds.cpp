@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include "common/format.hpp"
+#include "common/stats.hpp"
 
 namespace kolsky::ch4 {
 
@@ -51,23 +52,8 @@ std::vector<SeedCase> seed_study(const nlohmann::json& j, const std::string& sce
 
 namespace {
 
-struct Stat {
-  double mean = NAN, sd = NAN;
-  int n = 0;
-};
-Stat stat(const std::vector<double>& v) {
-  Stat s;
-  double sum = 0;
-  for (double x : v)
-    if (std::isfinite(x)) sum += x, ++s.n;
-  if (s.n == 0) return s;
-  s.mean = sum / s.n;
-  double q = 0;
-  for (double x : v)
-    if (std::isfinite(x)) q += (x - s.mean) * (x - s.mean);
-  s.sd = s.n > 1 ? std::sqrt(q / (s.n - 1)) : NAN;
-  return s;
-}
+using Stat = repro::SampleStat;
+Stat stat(const std::vector<double>& v) { return repro::sample_stat(v); }
 std::string pm(const Stat& s, double scale, const char* f) {
   return fmt(f, s.mean * scale) + " ± " + fmt(f, s.sd * scale);
 }

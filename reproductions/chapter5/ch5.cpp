@@ -45,7 +45,6 @@ nlohmann::json case_scene(const CaseSpec& spec, const std::string& dir, const st
   if (spec.end_time > 0) j["time"]["end"] = spec.end_time;
   if (!spec.loading_file.empty()) j["loading"]["file"] = spec.loading_file;
   if (spec.end_at_back_stress >= 0) j["loading"]["end_at_back_stress"] = spec.end_at_back_stress;
-  if (!spec.grain_size_curve.empty()) s["grain_size_curve"] = spec.grain_size_curve;
   if (spec.seed >= 0) s["seed"] = spec.seed;
   for (const std::string& item : spec.sets)
     if (!repro::set_scene_key(j, item)) throw std::runtime_error("scene override '" + item + "' is not key=JSON");

@@ -33,10 +33,9 @@ struct CaseSpec {
   bool breakage = true;       ///< false: the breakage block is removed
   double end_time = -1;       ///< time.end, s
   double fines_d_min = -1;    ///< m in the *original* sand (x N in the specimen)
-  // Study variants (issue 31, H2 / H3 / seed scatter; the set itself keeps the scene's):
+  // Loading, seed and overrides (issue 31: H2 / H3 studies, the full set's load_until and speed seeds):
   std::string loading_file;   ///< loading.file, relative to reproductions/chapter5/
   double end_at_back_stress = -1;  ///< loading.end_at_back_stress, Pa
-  std::string grain_size_curve;    ///< specimen.grain_size_curve, relative likewise
   long seed = -1;                  ///< specimen.seed (the packing's)
   std::vector<std::string> sets;   ///< "dotted.key=JSON" overrides (common/scene_override.hpp)
 };

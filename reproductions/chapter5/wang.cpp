@@ -9,6 +9,7 @@
 
 #include "chapter5/backcalc.hpp"
 #include "chapter5/studies.hpp"
+#include "common/stats.hpp"
 
 namespace kolsky::ch5 {
 
@@ -306,39 +307,29 @@ void wang_study(Study& s) {
       const auto d = stress_difference(ref.strain, ref.stress_back, r.strain, r.stress_back, 1e6, max_of(ref.stress_back));
       if (std::isfinite(d.rms)) rms.push_back(d.rms / 1e6);
     }
-    const auto mean = [](const std::vector<double>& v) {
-      double a = 0;
-      for (double x : v) a += x;
-      return v.empty() ? NAN : a / v.size();
-    };
-    const auto sd = [&mean](const std::vector<double>& v) {
-      if (v.size() < 2) return 0.0;
-      const double m0 = mean(v);
-      double a = 0;
-      for (double x : v) a += (x - m0) * (x - m0);
-      return std::sqrt(a / (v.size() - 1));
-    };
+    const repro::SampleStat err = repro::sample_stat(rms), cost = repro::sample_stat(run_cost);
+    const double err_sd = std::isfinite(err.sd) ? err.sd : 0.0;  // one seed: no bar
     const auto a = curve_at_stress(ref, 43e6), b = curve_at_stress(c, 43e6);
     const double pd = passing_difference(a, b, 75e-6, 1.0);
     // Under a second the packing was read from the cache: its cost is not known here.
     const bool packed_here = pack_s >= 1.0;
-    const double packed_cost = mean(run_cost) + pack_s / (c.simulated_s * 1e6);
+    const double packed_cost = cost.mean + pack_s / (c.simulated_s * 1e6);
     const std::string error = is_ref        ? "-"
-                              : rms.size() > 1 ? fmt("%.2f +- %.2f MPa", mean(rms), sd(rms))
-                                               : fmt("%.2f MPa", mean(rms));
+                              : rms.size() > 1 ? fmt("%.2f +- %.2f MPa", err.mean, err_sd)
+                                               : fmt("%.2f MPa", err.mean);
     md += fmt("| %g | %.3f GPa | %zu -> %zu | %.3f s | %s | %s | %zu | %.2f points |\n", n, c.spec.sigma_lim0 / 1e9,
-              c.grains_initial, c.grains_final, mean(run_cost),
+              c.grains_initial, c.grains_final, cost.mean,
               packed_here ? fmt("%.3f s (packing %.0f s)", packed_cost, pack_s).c_str() : "- (packing cached)",
               error.c_str(), members.size(), pd);
     if (is_ref || rms.empty()) continue;
-    run_only.x.push_back(mean(run_cost));
-    run_only.y.push_back(mean(rms));
-    run_only.yerr.push_back(sd(rms));
+    run_only.x.push_back(cost.mean);
+    run_only.y.push_back(err.mean);
+    run_only.yerr.push_back(err_sd);
     run_only.point_labels.push_back(fmt("N = %g", n));
     if (!packed_here) continue;
     packed.x.push_back(packed_cost);
-    packed.y.push_back(mean(rms));
-    packed.yerr.push_back(sd(rms));
+    packed.y.push_back(err.mean);
+    packed.yerr.push_back(err_sd);
   }
   se.reference_points = {run_only, packed};
   s.plots->push_back(se);

@@ -14,8 +14,6 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -24,6 +22,7 @@
 #include "chapter5/ch5.hpp"
 #include "common/study_args.hpp"
 #include "core/atomic_file.hpp"
+#include "io/csv.hpp"
 
 namespace {
 
@@ -82,25 +81,12 @@ Options parse(int argc, char** argv) {
 }
 
 void write_curve(const std::string& path, const psd::GrainSizeCurve& g) {
-  std::ostringstream s;
-  s << "diameter_m,percent_passing\n";
-  s.precision(10);
-  for (std::size_t k = 0; k < g.size(); ++k) s << g.diameter[k] << "," << g.percent_passing[k] << "\n";
-  write_file_atomic(path, s.str());
+  io::write_csv(path, {{"diameter_m", "percent_passing"}, {g.diameter, g.percent_passing}, {}, {}});
 }
 
 psd::GrainSizeCurve read_curve(const std::string& path) {
-  std::ifstream f(path);
-  psd::GrainSizeCurve g;
-  std::string line;
-  std::getline(f, line);
-  while (std::getline(f, line)) {
-    const auto comma = line.find(',');
-    if (comma == std::string::npos) continue;
-    g.diameter.push_back(std::stod(line.substr(0, comma)));
-    g.percent_passing.push_back(std::stod(line.substr(comma + 1)));
-  }
-  return g;
+  const io::CsvTable t = io::read_csv(path);
+  return {t.column("diameter_m"), t.column("percent_passing")};
 }
 
 }  // namespace
@@ -128,9 +114,9 @@ int main(int argc, char** argv) {
   spec.end_time = o.end_time;
   spec.loading_file = o.loading;
   spec.end_at_back_stress = o.end_at;
-  spec.grain_size_curve = o.psd;
   spec.seed = o.seed;
   spec.sets = o.sets;
+  if (!o.psd.empty()) spec.sets.push_back("specimen.grain_size_curve=" + nlohmann::json(o.psd).dump());
   std::printf("%s: N = %g, sigma_lim0 = %.4g GPa, loading %s, end at %.3g MPa or %.3g us\n", o.label.c_str(),
               o.upscale, spec.sigma_lim0 / 1e9, o.loading.c_str(), o.end_at / 1e6, o.end_time * 1e6);
   const ch5::CaseResult c = ch5::run_case(spec, dir, o.cache);
@@ -186,16 +172,14 @@ int main(int argc, char** argv) {
                 c.grain_count[k], growth, broken, c.relative_breakage[k],
                 std::isnan(rms) ? "-" : std::to_string(rms).c_str());
   }
-  std::ostringstream h;
-  h << "t_s,strain,stress_back_pa,grains,broken_parents,relative_breakage\n";
-  h.precision(8);
-  for (std::size_t k = 0; k < c.t.size(); ++k) {
-    h << c.t[k] << "," << c.strain[k] << "," << c.stress_back[k];
-    if (!c.grain_count.empty())
-      h << "," << c.grain_count[k] << "," << c.broken_primary[k] + c.broken_secondary[k] << "," << c.relative_breakage[k];
-    h << "\n";
+  io::CsvTable h{{"t_s", "strain", "stress_back_pa"}, {c.t, c.strain, c.stress_back}, {}, {}};
+  if (!c.grain_count.empty()) {
+    std::vector<double> broken(c.t.size());
+    for (std::size_t k = 0; k < broken.size(); ++k) broken[k] = c.broken_primary[k] + c.broken_secondary[k];
+    h.header.insert(h.header.end(), {"grains", "broken_parents", "relative_breakage"});
+    h.columns.insert(h.columns.end(), {c.grain_count, broken, c.relative_breakage});
   }
-  write_file_atomic(stem + "_history.csv", h.str());
+  io::write_csv(stem + "_history.csv", h);
   write_file_atomic(stem + ".json", j.dump(1) + "\n");  // last: marks the case done
   return 0;
 }
