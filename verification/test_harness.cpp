@@ -132,6 +132,29 @@ TEST(HarnessTrend, PassesWhenItHolds) {
   EXPECT_EQ(*b.value, 0.0);
 }
 
+// A trend's threshold: finite numbers by name, else refused with its JSON path; reading a missing
+// target or key is an error naming the file, the target and the key (docs/reproductions.md).
+TEST(HarnessTrend, ThresholdParsedRefusedAndRead) {
+  const json e = {{"id", "t"}, {"kind", "trend"}, {"unit", "-"}, {"reference", {{"source", "Sec. 5.3.1"}}},
+                  {"threshold", {{"max_rms_pa", 2e6}}}, {"why_band", "RMS <= 2 MPa"}, {"status", "expected_pass"}};
+  const TargetSet ts = parse({e});
+  EXPECT_EQ(threshold(ts, "t", "max_rms_pa"), 2e6);
+  auto with = [](json entry, json thr) { entry["threshold"] = std::move(thr); return entry; };
+  EXPECT_EQ(error_path({with(e, {{"max_rms_pa", "2e6"}})}), "targets[0].threshold.max_rms_pa");
+  EXPECT_EQ(error_path({with(e, {{"max_rms_pa", NAN}})}), "targets[0].threshold.max_rms_pa");
+  EXPECT_EQ(error_path({with(e, json::object())}), "targets[0].threshold");
+  EXPECT_EQ(error_path({with(e, 2e6)}), "targets[0].threshold");
+  EXPECT_EQ(error_path({with(scalar_entry("s", {{"lo", 0}, {"hi", 1}}), {{"k", 1}})}), "targets[0].threshold");
+  auto read_error = [&](const std::string& id) -> std::string {
+    try { threshold(ts, id, "min_ratio"); } catch (const kolsky::InputError& err) { return err.what(); }
+    return "no error";
+  };
+  EXPECT_EQ(read_error("t"), "targets.json: targets[0].threshold.min_ratio: required field is missing "
+                             "(target 't': the driver's rule reads it)");
+  EXPECT_EQ(read_error("nope"),
+            "targets.json: targets: no target 'nope', whose threshold 'min_ratio' the driver reads");
+}
+
 // The Chapter 5 driver measures two parts on two threads and merges them: every value and
 // note must arrive, and an id measured by both parts is a driver bug, not a silent overwrite.
 TEST(HarnessMeasurements, MergeKeepsValuesAndNotesAndRefusesDuplicates) {

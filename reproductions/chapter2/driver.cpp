@@ -49,6 +49,7 @@ int main(int argc, char** argv) {
   harness::ReportInput rep = repro::report_input(args, repro::SmokeTargets::same_as_full);  // smoke meets the same bands
   auto& m = rep.m;
   const auto targets = ch2::read_json(args.set_dir() + "/targets.json");
+  const harness::TargetSet target_set = harness::load_targets(rep.targets_path, args.repo_root);
   const std::string scene_path = args.set_dir() + "/scene_" + args.scale + ".json";
   const ch2::BaseScene base{repro::read_scene_json(scene_path, args.perturb_seed), scene_path, args.set_dir()};
   const std::string data = args.repo_root + "/data/digitized/chapter2/";
@@ -179,7 +180,8 @@ int main(int argc, char** argv) {
 
   // (4), (5) The studies.
   std::string summary;
-  ch2::StudyContext ctx{&base, &targets, &reported, &m, &rep.plots, &summary, steel, args.repo_root, rep.out_dir};
+  ch2::StudyContext ctx{&base, &targets, &reported, &m, &rep.plots, &summary, steel, args.repo_root, rep.out_dir,
+                        &target_set};
   ch2::equilibrium_study(ctx, cal.table);
   ch2::water_content_study(ctx, scale.water_contents);
   // (6) Rate independence (polycarbonate 480/s vs 900/s); (7) bar model; (8) mesh refinement.

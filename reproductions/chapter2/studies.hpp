@@ -10,6 +10,7 @@
 #include "chapter2/ch2.hpp"
 #include "harness/plot.hpp"
 #include "harness/score.hpp"
+#include "harness/targets.hpp"
 
 namespace kolsky::ch2 {
 
@@ -22,6 +23,7 @@ struct StudyContext {
   std::string* summary = nullptr;  ///< markdown lines appended for the report preamble
   TubeSpec steel;
   std::string repo_root, out_dir;
+  const harness::TargetSet* target_set = nullptr;  ///< targets.json validated: trend thresholds
 };
 
 /// Sec. 2.4.2 with the calibrated dry EOS `eos` and the steel tube.

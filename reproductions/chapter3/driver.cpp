@@ -62,6 +62,7 @@ int main(int argc, char** argv) {
     const auto& w = x.studies.at("windows");
     x.eps_lo = w.at("slope_strain")[0], x.eps_hi = w.at("slope_strain")[1];
     x.cutoff = w.at("cutoff_stress"), x.ringing_stress = w.at("ringing_stress");
+    x.min_speedup = ch3::level_speedups(x, harness::load_targets(rep.targets_path, args.repo_root));
     std::string table = "| case | grains | x (N_scene / N_text)^3 | porosity | slope 2-6 % (MPa) | strain at 13 MPa | "
                         "mean strain rate (1/s) | max face alpha after ringing | off-axis fraction | wall time (s): case / time loop |\n"
                         "|---|---|---|---|---|---|---|---|---|---|\n";

@@ -23,7 +23,13 @@ struct Context {
   harness::Measurements* m = nullptr;
   std::vector<harness::Plot>* plots = nullptr;
   std::string markdown;          ///< appended to the report preamble
+  std::map<std::string, double> min_speedup;  ///< level id -> its ".faster" trend's threshold
 };
+
+/// For each reduced level of x.studies with a trend "ch3.level.<id>.faster" in `targets`, the
+/// speed-up it must reach (its threshold "min_speedup"), read before any run so that a missing
+/// one fails fast; a level without such a target records no speed trend.
+std::map<std::string, double> level_speedups(const Context& x, const harness::TargetSet& targets);
 
 /// base with `patch` merged in (RFC 7386 merge patch), as a case.
 CaseSpec make_case(const Context& x, const std::string& label, const nlohmann::json& patch);

@@ -23,6 +23,7 @@
 #include "common/report_input.hpp"
 #include "common/perturb.hpp"
 #include "harness/report.hpp"
+#include "harness/targets.hpp"
 #include "common/format.hpp"
 
 using namespace kolsky;
@@ -75,6 +76,11 @@ int main(int argc, char** argv) {
   harness::ReportInput rep = repro::report_input(args, repro::SmokeTargets::own_file);
   auto& m = rep.m;
   const auto targets = ch4::read_json(rep.targets_path);
+  // The tie each rotation ordering allows: its targets-file threshold, read before any run.
+  const harness::TargetSet target_set = harness::load_targets(rep.targets_path, args.repo_root);
+  auto tie = [&](const char* id) { return harness::threshold(target_set, id, "tie_rtol"); };
+  const double tie_stiffest = tie("ch4.trend_rotation_k0_stiffest"), tie_softest = tie("ch4.trend_rotation_k1_softest");
+  const double tie_arrival = tie("ch4.trend_rotation_k0_earliest_arrival"), tie_alpha = tie("ch4.trend_rotation_k0_closest_equilibrium");
   const auto reported = ch4::read_json(args.repo_root + "/data/digitized/chapter4/reported.json");
   auto printed = [&](const std::string& id) {
     for (const auto& v : reported.at("values"))
@@ -222,11 +228,10 @@ int main(int argc, char** argv) {
       if (cases[i].rolling_factor == k) return static_cast<long>(i);
     return -1L;
   };
-  // An ordering holds when `who` is the extreme or ties it to 0.1 %: k = 0.99999975 per ns
-  // and k = 1 differ by a ~6 % spin retardation over the window, which leaves their slopes
-  // equal to 4 digits at N = 6; equal values are not an inversion.
-  constexpr double kTie = 1e-3;
-  auto extreme = [&](auto value, bool want_max, long who) {
+  // An ordering holds when `who` is the extreme or ties it to `tie` (0.1 % in the targets files):
+  // k = 0.99999975 per ns and k = 1 differ by a ~6 % spin retardation over the window, which
+  // leaves their slopes equal to 4 digits at N = 6; equal values are not an inversion.
+  auto extreme = [&](auto value, bool want_max, long who, double tie) {
     bool holds = true;
     std::string what;
     for (size_t i = 0; i < cases.size(); ++i) {
@@ -238,7 +243,7 @@ int main(int argc, char** argv) {
       }
       if (static_cast<long>(i) == who) continue;
       const double w = value(ms[who]);
-      if (!(want_max ? w >= v - kTie * std::abs(v) : w <= v + kTie * std::abs(v))) holds = false;
+      if (!(want_max ? w >= v - tie * std::abs(v) : w <= v + tie * std::abs(v))) holds = false;
     }
     return std::make_pair(holds && who >= 0 && std::isfinite(value(ms[who >= 0 ? who : 0])), what);
   };
@@ -255,13 +260,13 @@ int main(int argc, char** argv) {
     common = common_window_alpha(cp, mp, t_a, t_b);
   }
   auto alm = [](const ch4::Measures& q) { return q.alpha_mean; };
-  auto [s0, w0] = extreme(M, true, i0);
+  auto [s0, w0] = extreme(M, true, i0, tie_stiffest);
   m.trend("ch4.trend_rotation_k0_stiffest", s0, "M (MPa) " + w0);
-  auto [s1, w1] = extreme(M, false, i1);
+  auto [s1, w1] = extreme(M, false, i1, tie_softest);
   m.trend("ch4.trend_rotation_k1_softest", s1, "M (MPa) " + w1);
-  auto [s2, w2] = extreme(arr, false, i0);
+  auto [s2, w2] = extreme(arr, false, i0, tie_arrival);
   m.trend("ch4.trend_rotation_k0_earliest_arrival", s2, "back arrival (us) " + w2);
-  auto [s3, w3] = extreme(alm, false, i0);
+  auto [s3, w3] = extreme(alm, false, i0, tie_alpha);
   m.trend("ch4.trend_rotation_k0_closest_equilibrium", s3,
           (common ? "mean alpha over t = " + fmt("%.1f", t_a * 1e6) + "-" + fmt("%.1f us", t_b * 1e6)
                   : std::string("no common time window; mean alpha over each case's own 1-10 MPa window")) +

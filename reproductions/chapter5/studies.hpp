@@ -7,6 +7,7 @@
 
 #include "chapter5/ch5.hpp"
 #include "harness/report.hpp"
+#include "harness/targets.hpp"
 
 namespace kolsky::ch5 {
 
@@ -19,7 +20,12 @@ struct Study {
   std::vector<harness::Plot>* plots = nullptr;
   std::string markdown;          ///< appended to the report's preamble
   unsigned perturb_seed = 0;     ///< --perturb-ulp
+  const harness::TargetSet* targets = nullptr;       ///< this scale's targets file
+  const harness::TargetSet* full_targets = nullptr;  ///< targets.json (the same at full scale)
   double printed(const std::string& id) const;
+  /// A trend's threshold (harness::threshold) from this scale's targets file; a target the
+  /// smoke file leaves out (measured and gated there, not scored) keeps targets.json's.
+  double threshold(const std::string& id, const std::string& key) const;
   /// Runs a case and prints its one-line summary.
   CaseResult run(const CaseSpec& spec) const;
 };

@@ -156,9 +156,24 @@ Tolerance parse_tolerance(const Node& n, Kind kind) {
   return t;
 }
 
+/// A trend's named numbers, {"max_rms_pa": 2e6}: the driver's comparison reads each by name, so
+/// the numbers of a pass rule sit here beside its why_band instead of in the driver (issue 32).
+std::map<std::string, double> parse_threshold(const Node& e, Kind kind) {
+  if (kind != Kind::trend)
+    e.fail_at("threshold", "applies to trends only (scalars and curves use band or tolerance)");
+  const Node n = e.child("threshold");
+  if (n.raw().empty()) n.fail("must name at least one number");
+  std::map<std::string, double> out;
+  for (const auto& [key, value] : n.raw().items()) {
+    if (key.empty()) n.fail("a name must not be empty");
+    out[key] = n.finite_number(value, n.at(key));
+  }
+  return out;
+}
+
 Target parse_entry(const Node& e, const std::string& repo_root) {
-  e.only({"id", "kind", "unit", "reference", "band", "tolerance", "why_band", "status", "reason",
-          "description"});
+  e.only({"id", "kind", "unit", "reference", "band", "tolerance", "threshold", "why_band", "status",
+          "reason", "description"});
   Target t;
   t.id = e.text("id", false);
   const std::string kind = e.text("kind", false);
@@ -183,6 +198,7 @@ Target parse_entry(const Node& e, const std::string& repo_root) {
     e.fail_at(t.kind == Kind::scalar ? "band" : "tolerance",
               t.kind == Kind::scalar ? "a scalar needs band or tolerance" : "a curve needs tolerance");
   }
+  if (e.has("threshold")) t.threshold = parse_threshold(e, t.kind);
   t.why_band = e.text("why_band", false);
 
   const std::string status = e.text("status", false);
@@ -236,6 +252,21 @@ TargetSet parse_targets(const json& doc, const std::string& path, const std::str
     s.targets.push_back(std::move(t));
   }
   return s;
+}
+
+double threshold(const TargetSet& s, const std::string& id, const std::string& key) {
+  const Target* t = s.find(id);
+  if (t == nullptr)
+    throw InputError(s.path, "targets",
+                     "no target '" + id + "', whose threshold '" + key + "' the driver reads");
+  const auto it = t->threshold.find(key);
+  if (it == t->threshold.end()) {
+    const std::string where =
+        "targets[" + std::to_string(t - s.targets.data()) + "].threshold." + key;
+    throw InputError(s.path, where,
+                     "required field is missing (target '" + id + "': the driver's rule reads it)");
+  }
+  return it->second;
 }
 
 TargetSet load_targets(const std::string& path, const std::string& repo_root) {

@@ -1,9 +1,12 @@
 // Reproduction targets: the parsed, validated form of reproductions/<set>/targets.json.
 // Reference numbers and tolerances live only in that file (with their dissertation source and a
-// reason for the band); drivers never hard-code them. Entry format: docs/reproductions.md.
+// reason for the band), and so do the numbers of a trend's pass rule (its "threshold", read by
+// the driver through threshold() below); drivers never hard-code them. Entry format:
+// docs/reproductions.md.
 #pragma once
 #include <nlohmann/json.hpp>
 
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -50,6 +53,7 @@ struct Target {
   Reference reference;
   std::optional<Band> band;            // scalar only, exclusive with tolerance
   std::optional<Tolerance> tolerance;  // scalar or curve (required for curves)
+  std::map<std::string, double> threshold;  // trend only, optional: named numbers of its rule
   std::string why_band;
   Status status = Status::expected_pass;
   std::string reason;                  // non-empty iff known_deviation
@@ -74,5 +78,10 @@ TargetSet load_targets(const std::string& path, const std::string& repo_root);
 /// Same checks for an already parsed document; `path` is only used in messages.
 TargetSet parse_targets(const nlohmann::json& doc, const std::string& path,
                         const std::string& repo_root);
+
+/// The number `key` of trend `id`'s "threshold" object, which the driver's comparison uses (e.g.
+/// threshold(targets, "ch5.wang.pair_coincide_low", "max_rms_pa") for `rms <= 2e6`). Throws
+/// kolsky::InputError naming the targets file, the target and the key when either is missing.
+double threshold(const TargetSet& s, const std::string& id, const std::string& key);
 
 }  // namespace kolsky::harness
