@@ -210,7 +210,7 @@ void run_breaking(benchmark::State& st, const Specimen& s, int threads, int step
   const int previous = omp_get_max_threads();
   omp_set_num_threads(threads);
   dem::BreakageParams bp;
-  bp.sigma_lim0 = sigma;
+  bp.criterion = dem::HertzianContactCriterion{.sigma_lim0 = sigma};
   bp.coordination_limit = 0;
   dem::DemOptions opt;  // growing: the step of the smallest possible daughter
   opt.adapt_threads = false;

@@ -3,6 +3,7 @@
 //    Eq. 5.13 (the elastic Hertz force reaching F_crit), over a sweep of grain sizes;
 //  - a grain crushed by a moving platen breaks in the first step whose wall force reaches
 //    F_crit (r' = r, rigid wall), not before;
+//  - the constant-stress criterion breaks the grain whose sigma_c d^2 the contact force reaches;
 //  - on a linear wall, F_crit is the rigid plane's by default and four times it with
 //    wall_as_grain (E' of two alike grains);
 //  - coordination limit (c_lim contacts never break, c_lim = 0 lets them) and comminution
@@ -31,6 +32,8 @@
 namespace kolsky::dem {
 namespace {
 
+HertzianContactCriterion& hc(BreakageParams& p) { return std::get<HertzianContactCriterion>(p.criterion); }
+
 using test::kBusySand;
 const HertzMindlinParams kHm{0.5, 0.5};
 
@@ -47,7 +50,7 @@ TEST(BreakageEngine, PairBreaksAtTheClosedFormOverlap) {
   const Material& m = kBusySand[0];
   const double e_eff = effective_modulus(m.youngs_modulus, m.poisson_ratio, m.youngs_modulus, m.poisson_ratio);
   BreakageParams bp;
-  bp.sigma_lim0 = 0.2e9;  // low, so the critical overlaps stay small next to r
+  hc(bp).sigma_lim0 = 0.2e9;  // low, so the critical overlaps stay small next to r
   for (const double r : {1e-4, 2e-4, 4e-4, 8e-4}) {
     const DemSystem probe = pair_at(r, 1e-9 * r);
     const BreakageState s = start_breakage(bp, 11, probe.particles());
@@ -67,6 +70,40 @@ TEST(BreakageEngine, PairBreaksAtTheClosedFormOverlap) {
     EXPECT_NEAR(std::fabs(above[0].axis.z), 1.0, 1e-15);  // the contact normal
     RecordProperty("f_crit_r" + std::to_string(static_cast<int>(r * 1e6)) + "um", std::to_string(f_crit));
   }
+}
+
+// The second criterion (breakage_criterion.hpp): F >= sigma_c d^2. Two unequal grains share one
+// contact force, so the smaller one, whose sigma_c d^2 is four times lower, breaks first, at the
+// overlap where hertz_normal_force reaches sigma_c d_small^2; its larger partner does not.
+TEST(BreakageEngine, ConstantStressBreaksTheSmallerGrainAtItsForce) {
+  const Material& m = kBusySand[0];
+  const double e_eff = effective_modulus(m.youngs_modulus, m.poisson_ratio, m.youngs_modulus, m.poisson_ratio);
+  const double sigma_c = 20e6, r = 2e-4;
+  BreakageParams bp;
+  bp.criterion = ConstantStressCriterion{sigma_c};
+  const auto pair = [&](double overlap) {
+    Particles p;
+    p.add({0, 0, 0}, r, 0, kBusySand);
+    p.add({0, 0, 3 * r - overlap}, 2 * r, 0, kBusySand);
+    DemSystem sys(p, kBusySand, HertzMindlin(kBusySand, kHm));
+    sys.compute_forces();
+    return sys;
+  };
+  const BreakageState s = start_breakage(bp, 5, pair(0.0).particles());
+  EXPECT_EQ(s.strength[0], sigma_c);  // no scatter: every grain alike
+  EXPECT_EQ(s.strength[1], sigma_c);
+  const double r_eff = effective_radius(r, 2 * r), f_small = sigma_c * 4 * r * r;
+  const double delta = std::pow(f_small / (4.0 / 3.0 * e_eff * std::sqrt(r_eff)), 2.0 / 3.0);
+  ASSERT_LT(delta, 0.05 * r);
+  EXPECT_TRUE(find_breaks(pair(delta * (1 - 1e-9)), s).empty());
+  const auto above = find_breaks(pair(delta * (1 + 1e-9)), s);
+  ASSERT_EQ(above.size(), 1u);
+  EXPECT_EQ(above[0].grain, 0);
+  // The larger grain needs four times the force: at 3.9 x f_small, still whole.
+  const double delta4 = delta * std::pow(3.9, 2.0 / 3.0);
+  const auto at4 = find_breaks(pair(delta4), s);
+  ASSERT_EQ(at4.size(), 1u);
+  EXPECT_EQ(at4[0].grain, 0);
 }
 
 TEST(BreakageEngine, PlatenCrushBreaksInTheFirstStepAboveTheCriticalForce) {
@@ -116,7 +153,7 @@ TEST(BreakageEngine, WallContactTakesTheRigidPlaneOrTheAlikeGrainModulus) {
     return sys;
   };
   BreakageParams rigid, alike;
-  alike.wall_as_grain = true;
+  hc(alike).wall_as_grain = true;
   const BreakageState sr = start_breakage(rigid, 3, on_wall(1.0).particles());
   const BreakageState sa = start_breakage(alike, 3, on_wall(1.0).particles());
   ASSERT_EQ(sr.strength[0], sa.strength[0]);  // the flag changes E' only, not the grain
@@ -217,7 +254,7 @@ TEST(BreakageEngine, GrainsBelowTheComminutionLimitNeverBreak) {
   DemSystem sys(p, kBusySand, HertzMindlin(kBusySand, kHm));
   sys.compute_forces();
   BreakageParams bp;
-  bp.sigma_lim0 = 1e8;
+  hc(bp).sigma_lim0 = 1e8;
   bp.fines_d_min = 1e-6;
   const BreakageState s = start_breakage(bp, 2, sys.particles());
   EXPECT_TRUE(find_breaks(sys, s).empty());
@@ -234,7 +271,7 @@ TEST(BreakageEngine, ReplacementKeepsVolumeMomentumAndTheLedgerClosed) {
   q.omega[0] = {50, 0, -20};
   sys.compute_forces();
   BreakageParams bp;
-  bp.sigma_lim0 = 0.05e9;
+  hc(bp).sigma_lim0 = 0.05e9;
   BreakageState s = start_breakage(bp, 9, sys.particles());
   auto events = find_breaks(sys, s);
   ASSERT_FALSE(events.empty());
@@ -277,7 +314,7 @@ BusyRun busy_breaking_run(int threads, int steps) {
   omp_set_num_threads(threads);
   test::BusyScene scene;
   BreakageParams bp;
-  bp.sigma_lim0 = 0.2e9;  // critical overlaps ~0.4 um: the platen reaches them within 1000 steps
+  hc(bp).sigma_lim0 = 0.2e9;  // critical overlaps ~0.4 um: the platen reaches them within 1000 steps
   bp.coordination_limit = 0;
   DemOptions opt = test::busy_options();
   opt.owner_block = 256;
@@ -314,7 +351,7 @@ TEST(BreakageEngine, BusySceneBreaksTheSameWithOneAndTwoThreads) {
 DemSpecimen breaking_specimen() {
   test::BusyScene scene;
   BreakageParams bp;
-  bp.sigma_lim0 = 0.2e9;
+  hc(bp).sigma_lim0 = 0.2e9;
   bp.coordination_limit = 0;
   const Particles grains = test::busy_grains(scene);
   DemOptions opt = test::busy_options();
@@ -323,8 +360,9 @@ DemSpecimen breaking_specimen() {
   walls.length = scene.top() + scene.r;
   walls.radius = scene.tube_radius;
   DemSpecimen s(grains, kBusySand, HertzMindlin(kBusySand, kHm), walls, opt);
-  s.enable_breakage(bp, 17, 7);  // checks every 7 steps: the checkpoint at 120 falls between two
-                                 // (breaks at steps 50-400: 8 by 100, 18 by 400)
+  bp.cadence.check_interval = 7;
+  s.enable_breakage(bp, 17);  // the checkpoint at 120 falls between two checks
+                              // (breaks at steps 50-400: 8 by 100, 18 by 400)
   return s;
 }
 

@@ -23,6 +23,7 @@
 #include "core/hash.hpp"
 #include "dem/apollonian.hpp"
 #include "dem/breakage_model.hpp"
+#include "dem/hertz.hpp"
 #include "test_support.hpp"
 
 namespace kolsky::dem {
@@ -68,7 +69,7 @@ TEST(BreakageVariability, DocumentedRecipeReproducesTheDraws) {
   std::uint64_t fnv = 14695981039346656037ull;
   for (unsigned char c : std::string("kolsky.breakage.var")) fnv = (fnv ^ c) * 1099511628211ull;
   EXPECT_EQ(fnv1a_64("a"), 0xaf63dc4c8601ec8cull);  // the published test vector
-  const BreakageParams p;
+  const HertzianContactCriterion p;
   for (std::uint64_t seed : {1ull, 2009ull}) {
     std::uint64_t key_state = seed ^ fnv;
     std::uint64_t stream = splitmix(key_state);  // the stream's key
@@ -100,7 +101,7 @@ TEST(BreakageCriterion, ClosedFormSolvesTheImplicitEq513) {
 TEST(BreakageCriterion, Targets5bIllustration) {
   // E' = E / (2 (1 - nu^2)) = 42.857 GPa as targets.md 5a prints it (5 significant figures).
   EXPECT_NEAR(kSandE, 42.857e9, 0.0005e9);
-  BreakageParams p;
+  HertzianContactCriterion p;
   p.sigma_lim0 = 1.53e9;
   const double s1 = strength_limit(p, 0.3e-3, 1.0);
   EXPECT_NEAR(s1, 10.2e9, 1e-14 * 10.2e9);  // 1.53 / 0.15: one pow and one product
@@ -125,7 +126,7 @@ TEST(BreakageCriterion, Targets5bIllustration) {
 TEST(BreakageCriterion, SizeEffectFollowsDToTheTwoMinusNineOverM1) {
   // Identical grains (r' = d/4), var = 1: F_crit ~ sigma_lim^3 r'^2 ~ d^(-9/m1) d^2.
   for (double m1 : {3.0, 4.5, 6.0, 9.0}) {
-    BreakageParams p;
+    HertzianContactCriterion p;
     p.m1 = m1;
     std::vector<double> d, f;
     for (int i = 0; i < 10; ++i) {
@@ -143,7 +144,7 @@ TEST(BreakageCriterion, SizeEffectFollowsDToTheTwoMinusNineOverM1) {
   // Eq. 5.17 with m1 = 3 is linear in N (targets.md 5b: 2.295 / 3.06 / 3.825 GPa; one pow and
   // one product: 1e-14), and an N-times larger grain of the N-upscaled specimen is exactly as
   // strong as the original grain.
-  BreakageParams orig, up;
+  HertzianContactCriterion orig, up;
   orig.sigma_lim0 = 1.53e9;
   for (auto [n, expect] : {std::pair{1.5, 2.295e9}, {2.0, 3.06e9}, {2.5, 3.825e9}}) {
     up.sigma_lim0 = upscaled_sigma_lim0(orig.sigma_lim0, n, 3);
@@ -154,7 +155,7 @@ TEST(BreakageCriterion, SizeEffectFollowsDToTheTwoMinusNineOverM1) {
 }
 
 TEST(BreakageVariability, Eq515IsUniformOnItsRange) {
-  const BreakageParams p;
+  const HertzianContactCriterion p;
   const double lo = (1 - p.var_b) / p.var_a, hi = -p.var_b / p.var_a;  // U = 1 and U = 0
   EXPECT_NEAR(lo, 0.549, 0.0005);  // targets.md 5b, 3 decimals
   EXPECT_NEAR(hi, 1.369, 0.0005);
@@ -184,7 +185,7 @@ TEST(BreakageVariability, Eq515IsUniformOnItsRange) {
 }
 
 TEST(BreakageVariability, DrawDependsOnlyOnSeedAndId) {
-  const BreakageParams p;
+  const HertzianContactCriterion p;
   const std::size_t n = 20000;
   const std::uint64_t seed = 77;
   std::vector<double> fwd(n), rev(n), threaded(n);
@@ -223,6 +224,38 @@ TEST(BreakageIds, DaughterIdsAreDistinct) {
   EXPECT_THROW(daughter_id(42, 14), std::out_of_range);
 }
 
+// The engine's form of Eq. 5.13 (pair_ratio, overlap over the critical overlap written with
+// products only) against the reference closed form critical_overlap, over three decades of
+// size and strength: equal to a few ulp (1e-15 relative), so the engine decides where the
+// reference says.
+TEST(BreakageCriterion, EngineFormIsTheCriticalOverlapRatio) {
+  const HertzianContactCriterion c;
+  for (const double r : {1e-5, 1e-4, 1e-3})
+    for (const double sigma : {1e8, 1e9, 1e10})
+      for (const double delta : {1e-9, 1e-7, 1e-6}) {
+        const double r_eff = effective_radius(r, 2 * r);
+        const double engine = pair_ratio(c, delta, 1 / r + 1 / (2 * r), pair_constant(c, kSandE),
+                                         grain_constant(c, sigma, 2 * r));
+        const double reference = delta / critical_overlap(sigma, r_eff, kSandE);
+        EXPECT_NEAR(engine / reference, 1.0, 1e-15) << r << " " << sigma << " " << delta;
+      }
+  // At a wall, the ratio is F / F_crit itself.
+  EXPECT_DOUBLE_EQ(wall_ratio(c, 2.0, 1e-4, kSandE, 1e9), 2.0 / critical_force(1e9, 1e-4, kSandE));
+}
+
+TEST(BreakageCriterion, ConstantStressIsForceOverSigmaDSquared) {
+  const ConstantStressCriterion c{30e6};
+  const double d = 4e-4, f = 3.0, r_eff = effective_radius(d / 2, d / 2), delta = 2e-7;
+  EXPECT_EQ(grain_strength(c, d, 1, 2), 30e6);
+  EXPECT_DOUBLE_EQ(wall_ratio(c, f, d / 2, kSandE, 30e6), f / (30e6 * d * d));
+  const double force = hertz_normal_force(kSandE, r_eff, delta);
+  EXPECT_NEAR(pair_ratio(c, delta, 4 / d, pair_constant(c, kSandE), grain_constant(c, 30e6, d)),
+              force / (30e6 * d * d), 1e-15 * force / (30e6 * d * d));
+  EXPECT_EQ(std::get<ConstantStressCriterion>(default_criterion("constant_stress")).characteristic_stress,
+            ConstantStressCriterion{}.characteristic_stress);
+  EXPECT_THROW(default_criterion("hertzian"), std::invalid_argument);
+}
+
 TEST(BreakageLimits, CoordinationAndComminution) {
   BreakageParams p;  // c_lim = 8, factor 0.22
   EXPECT_TRUE(coordination_allows_break(p, 7));
@@ -232,37 +265,45 @@ TEST(BreakageLimits, CoordinationAndComminution) {
   EXPECT_EQ(counted_coordination(p, 5, 3), 5);
   const double d50 = 0.6e-3, lim = comminution_diameter(p, d50);
   EXPECT_DOUBLE_EQ(lim, 0.132e-3);
-  const double f_crit = 100.0, huge = 1e6 * f_crit;
-  EXPECT_TRUE(grain_breaks(p, 2 * lim, d50, 7, f_crit, f_crit));  // F = F_crit breaks (>=)
-  EXPECT_FALSE(grain_breaks(p, 2 * lim, d50, 7, 0.999 * f_crit, f_crit));
-  EXPECT_FALSE(grain_breaks(p, 2 * lim, d50, 8, huge, f_crit));  // at c_lim: never
-  EXPECT_FALSE(grain_breaks(p, 0.999 * lim, d50, 0, huge, f_crit));  // below the comminution limit
-  EXPECT_TRUE(grain_breaks(p, lim, d50, 0, huge, f_crit));  // at the limit itself it may
+  // The load ratio is the criterion's (F / F_crit for Eq. 5.13); 1e6: far past it.
+  EXPECT_TRUE(grain_breaks(p, 2 * lim, d50, 7, 1.0));  // F = F_crit breaks (>=)
+  EXPECT_FALSE(grain_breaks(p, 2 * lim, d50, 7, 0.999));
+  EXPECT_FALSE(grain_breaks(p, 2 * lim, d50, 7, std::nan("")));
+  EXPECT_FALSE(grain_breaks(p, 2 * lim, d50, 8, 1e6));  // at c_lim: never
+  EXPECT_FALSE(grain_breaks(p, 0.999 * lim, d50, 0, 1e6));  // below the comminution limit
+  EXPECT_TRUE(grain_breaks(p, lim, d50, 0, 1e6));  // at the limit itself it may
   p.coordination_limit = 0;  // the text's "no contact-limit criterion" (5e.9)
-  EXPECT_TRUE(grain_breaks(p, 2 * lim, d50, 50, huge, f_crit));
-  EXPECT_FALSE(grain_breaks(p, 0.999 * lim, d50, 0, huge, f_crit));  // comminution still holds
+  EXPECT_TRUE(grain_breaks(p, 2 * lim, d50, 50, 1e6));
+  EXPECT_FALSE(grain_breaks(p, 0.999 * lim, d50, 0, 1e6));  // comminution still holds
   EXPECT_DOUBLE_EQ(smallest_daughter_diameter(p, d50), 0.2240 * 0.132e-3);
 }
+
+HertzianContactCriterion& hc(BreakageParams& p) { return std::get<HertzianContactCriterion>(p.criterion); }
 
 TEST(BreakageParamsValidation, EachBadValueNamesItsPath) {
   EXPECT_NO_THROW(validate(BreakageParams{}));
   using Set = void (*)(BreakageParams&);
   const std::vector<std::pair<std::string, Set>> bad{
-      {"sigma_lim0", [](BreakageParams& p) { p.sigma_lim0 = 0; }},
-      {"sigma_lim0", [](BreakageParams& p) { p.sigma_lim0 = std::nan(""); }},
-      {"sigma_lim0", [](BreakageParams& p) { p.sigma_lim0 = kInf; }},
-      {"d0", [](BreakageParams& p) { p.d0 = -0.002; }},
-      {"m1", [](BreakageParams& p) { p.m1 = 0; }},
-      {"var_a", [](BreakageParams& p) { p.var_a = 0; }},
-      {"var_b", [](BreakageParams& p) { p.var_b = 1.0; }},   // var(U = 1) = 0
-      {"var_b", [](BreakageParams& p) { p.var_b = 0.5; }},   // var(U = 1) < 0
-      {"var_b", [](BreakageParams& p) { p.var_a = 1.22; }},  // var(U = 0) < 0
+      {"sigma_lim0", [](BreakageParams& p) { hc(p).sigma_lim0 = 0; }},
+      {"sigma_lim0", [](BreakageParams& p) { hc(p).sigma_lim0 = std::nan(""); }},
+      {"sigma_lim0", [](BreakageParams& p) { hc(p).sigma_lim0 = kInf; }},
+      {"d0", [](BreakageParams& p) { hc(p).d0 = -0.002; }},
+      {"m1", [](BreakageParams& p) { hc(p).m1 = 0; }},
+      {"var_a", [](BreakageParams& p) { hc(p).var_a = 0; }},
+      {"var_b", [](BreakageParams& p) { hc(p).var_b = 1.0; }},   // var(U = 1) = 0
+      {"var_b", [](BreakageParams& p) { hc(p).var_b = 0.5; }},   // var(U = 1) < 0
+      {"var_b", [](BreakageParams& p) { hc(p).var_a = 1.22; }},  // var(U = 0) < 0
       {"coordination_limit", [](BreakageParams& p) { p.coordination_limit = -1; }},
       {"comminution_factor", [](BreakageParams& p) { p.comminution_factor = 0; }},
       {"comminution_factor", [](BreakageParams& p) { p.comminution_factor = 1; }},
       {"fines_fractal_dimension", [](BreakageParams& p) { p.fines_fractal_dimension = std::nan(""); }},
       {"fines_fractal_dimension", [](BreakageParams& p) { p.fines_fractal_dimension = 0; }},
       {"fines_d_min", [](BreakageParams& p) { p.fines_d_min = 0; }},
+      {"check_interval", [](BreakageParams& p) { p.cadence.check_interval = 0; }},
+      {"check_period", [](BreakageParams& p) { p.cadence.check_period = -1e-6; }},
+      {"check_period", [](BreakageParams& p) { p.cadence.check_period = kInf; }},
+      {"characteristic_stress", [](BreakageParams& p) { p.criterion = ConstantStressCriterion{0.0}; }},
+      {"characteristic_stress", [](BreakageParams& p) { p.criterion = ConstantStressCriterion{std::nan("")}; }},
   };
   for (const auto& [key, set] : bad) {
     BreakageParams p;
@@ -275,7 +316,7 @@ TEST(BreakageParamsValidation, EachBadValueNamesItsPath) {
     }
   }
   BreakageParams ok;
-  ok.var_a = 1.0, ok.var_b = -0.5;  // increasing in U, range [0.5, 1.5]: allowed
+  hc(ok).var_a = 1.0, hc(ok).var_b = -0.5;  // increasing in U, range [0.5, 1.5]: allowed
   ok.fines_fractal_dimension = 3.0;             // the log limit of Eq. 5.16
   EXPECT_NO_THROW(validate(ok));
   ok.fines_fractal_dimension = 3.4;  // number-size exponents above 3 are reported for crushed rock

@@ -100,6 +100,23 @@ TEST(BreakageScene, BadBreakageInputNamesTheKey) {
   EXPECT_EQ(path_of_error(json::object(), {{"contact_law", "linear"}}), "specimen.breakage");
 }
 
+// The second criterion through the scene: the key selects it, its parameter reaches the
+// engine (grains break in a run), and the other criterion's keys are refused under it.
+TEST(BreakageScene, ConstantStressCriterionIsAScenesChoice) {
+  const json breakage = {{"criterion", "constant_stress"}, {"characteristic_stress", 20e6}, {"coordination_limit", 0}};
+  shpb::SimulatedShpb sim(spec_of(breaking_scene(breakage)));
+  const shpb::RunResult r = sim.run();
+  ASSERT_TRUE(r.complete) << r.failure;
+  const double breaks = r.probe("broken_primary").value.back() + r.probe("broken_secondary").value.back();
+  RecordProperty("breaks", std::to_string(breaks));
+  EXPECT_GT(breaks, 0.0);
+  EXPECT_EQ(path_of_error({{"criterion", "constant_stress"}, {"sigma_lim0", 1e9}}), "specimen.breakage.sigma_lim0");
+  EXPECT_EQ(path_of_error({{"criterion", "constant_stress"}, {"characteristic_stress", 0.0}}),
+            "specimen.breakage.characteristic_stress");
+  EXPECT_EQ(path_of_error({{"characteristic_stress", 20e6}}), "specimen.breakage.characteristic_stress");
+  EXPECT_EQ(path_of_error({{"criterion", "hertzian"}}), "specimen.breakage.criterion");
+}
+
 TEST(BreakageScene, FixedStepAboveTheDaughtersLimitIsRefused) {
   // The packed grains alone would allow this dt; their smallest possible daughter does not.
   json j = breaking_scene(nullptr);

@@ -10,6 +10,7 @@
 #include <string>
 
 #include "dem/dem_specimen_params.hpp"
+#include "io/packing_files.hpp"
 #include "dem/dem_state.hpp"
 #include "song_packing.hpp"
 
@@ -149,10 +150,10 @@ TEST(DemPackingCache, StoresReusesAndRegenerates) {
   p.diameter = 0.003;
   p.length = 0.002;
   p.max_settle_stages = 3;  // the cache does not need a converged packing
-  const CachedPacking first = cached_packing(p, dir.string());
+  const CachedPacking first = cached_packing(p, io::packing_files(dir.string()));
   EXPECT_FALSE(first.from_cache);
   ASSERT_TRUE(fs::exists(first.file));
-  const CachedPacking again = cached_packing(p, dir.string());
+  const CachedPacking again = cached_packing(p, io::packing_files(dir.string()));
   EXPECT_TRUE(again.from_cache);
   EXPECT_EQ(again.file, first.file);
   const PackingResult &x = first.result, &y = again.result;
@@ -180,10 +181,10 @@ TEST(DemPackingCache, StoresReusesAndRegenerates) {
   EXPECT_NE(packing_cache_key(q), packing_cache_key(p));
   // A damaged file is regenerated (and rewritten), never trusted.
   fs::resize_file(first.file, fs::file_size(first.file) / 2);
-  const CachedPacking repaired = cached_packing(p, dir.string());
+  const CachedPacking repaired = cached_packing(p, io::packing_files(dir.string()));
   EXPECT_FALSE(repaired.from_cache);
   EXPECT_EQ(repaired.result.count, x.count);
-  EXPECT_TRUE(cached_packing(p, dir.string()).from_cache);
+  EXPECT_TRUE(cached_packing(p, io::packing_files(dir.string())).from_cache);
   // No temporary files are left behind.
   int files = 0;
   for (const auto& e : fs::directory_iterator(dir)) {

@@ -13,6 +13,7 @@
 
 #include "core/errors.hpp"
 #include "dem/dem_specimen_params.hpp"
+#include "io/packing_files.hpp"
 #include "song_packing.hpp"
 
 namespace kolsky::dem {
@@ -87,8 +88,8 @@ TEST(DemPrestress, PorosityAndGrainsFollowTheRadiusFactor) {
 TEST(DemPrestress, DeterministicAndCachedBitwise) {
   const fs::path dir = fs::temp_directory_path() / "kolsky_test_prestress_cache";
   fs::remove_all(dir);
-  const CachedPacking first = cached_packing(stressed_params(), dir.string());
-  const CachedPacking again = cached_packing(stressed_params(), dir.string());
+  const CachedPacking first = cached_packing(stressed_params(), io::packing_files(dir.string()));
+  const CachedPacking again = cached_packing(stressed_params(), io::packing_files(dir.string()));
   EXPECT_FALSE(first.from_cache);
   EXPECT_TRUE(again.from_cache);
   // Generated directly, with a progress hook: it reports every phase in order, and it only

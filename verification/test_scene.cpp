@@ -91,6 +91,8 @@ class SceneTest : public ::testing::Test {
       j["specimen"] = {{"model", "dem"}, {"grain_size_curve", "psd.csv"}};
     if (selector == "specimen.contact_law")  // a DEM specimen with that grain law
       j["specimen"] = {{"model", "dem"}, {"grain_size_curve", "psd.csv"}, {"contact_law", value}};
+    if (selector == "specimen.breakage.criterion")  // a DEM specimen breaking by that criterion
+      j["specimen"] = {{"model", "dem"}, {"grain_size_curve", "psd.csv"}, {"breakage", {{"criterion", value}}}};
     if (selector == "loading.kind" && value == "strain_rate")  // no bars, no pulse; DEM only
       j = {{"loading", {{"kind", "strain_rate"}, {"file", "rate.csv"}}},
            {"specimen", {{"model", "dem"}, {"grain_size_curve", "psd.csv"}}},

@@ -34,7 +34,7 @@ dem::CachedPacking pack_scene(const nlohmann::json& j, const std::string& scene_
     if (std::isfinite(q.coordination)) std::printf(", Z %.2f", q.coordination);
     std::printf("\n");
   };
-  return dem::cached_packing(p, dp.packing_cache);
+  return dem::cached_packing(p, dp.packing_store);
 }
 
 WallLayer wall_layer(const nlohmann::json& j, const dem::Particles& p) {

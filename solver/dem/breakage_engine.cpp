@@ -5,9 +5,11 @@
 #include <limits>
 #include <numbers>
 #include <numeric>
+#include <variant>
 
 #include "dem/apollonian.hpp"
 #include "dem/dem_contacts.hpp"
+#include "dem/hertz.hpp"
 
 namespace kolsky::dem {
 
@@ -45,6 +47,10 @@ std::vector<T> realigned(const std::vector<T>& old, const EditMap& m, std::size_
   return out;
 }
 
+double strength_of(const BreakageParams& p, double diameter, std::uint64_t seed, std::uint64_t id) {
+  return std::visit([&](const auto& c) { return grain_strength(c, diameter, seed, id); }, p.criterion);
+}
+
 double kinetic(const Particles& p, std::size_t i) {
   return 0.5 * p.mass[i] * dot(p.v[i], p.v[i]) + 0.5 * p.inertia[i] * dot(p.omega[i], p.omega[i]);
 }
@@ -78,7 +84,7 @@ BreakageState start_breakage(const BreakageParams& p, std::uint64_t seed, const 
   validate_against_d50(p, s.d50_initial);
   for (std::size_t i = 0; i < grains.size(); ++i) {
     s.id.push_back(i);
-    s.strength.push_back(strength_limit(p, 2.0 * grains.radius[i], strength_variability(p, seed, i)));
+    s.strength.push_back(strength_of(p, 2.0 * grains.radius[i], seed, i));
     s.generation.push_back(0);
   }
   s.sizes = curve_sizes(p, grains);
@@ -86,12 +92,15 @@ BreakageState start_breakage(const BreakageParams& p, std::uint64_t seed, const 
   return s;
 }
 
-std::vector<BreakEvent> find_breaks(const DemSystem& sys, const BreakageState& s) {
-  // Eq. 5.13 in overlap form for a Hertz pair (critical_overlap): grain i's criterion holds when
-  // delta >= r' (3 pi sigma_i / (4 E'))^2, i.e. ratio = delta (4 E' / (3 pi))^2 (1/r') / sigma_i^2
-  // >= 1: no root, no power, 1/r' = 1/r_i + 1/r_j. The largest contact force orients the set;
-  // forces are compared squared, F^2 = (16/9) E'^2 r' delta^3 for a pair. This pass runs at
-  // every check, so it is kept to a few multiplications per touching contact.
+namespace {
+
+// One pass over the touching contacts with criterion C (breakage_criterion.hpp), resolved once
+// per check rather than per contact. A grain's load ratio is the largest over its contacts;
+// the largest contact force orients the daughter set. Forces are compared squared,
+// F^2 = (16/9) E'^2 r' delta^3 for a pair (hertz.hpp's force, squared to spare the roots): this
+// pass runs at every check, so it is kept to a few multiplications per touching contact.
+template <class C>
+std::vector<BreakEvent> find_breaks_with(const C& criterion, const DemSystem& sys, const BreakageState& s) {
   const Particles& p = sys.particles();
   const auto& mat = sys.materials();
   const std::size_t n = p.size(), n_mat = mat.size();
@@ -101,17 +110,17 @@ std::vector<BreakEvent> find_breaks(const DemSystem& sys, const BreakageState& s
       const double e = effective_modulus(mat[a].youngs_modulus, mat[a].poisson_ratio, mat[b].youngs_modulus,
                                          mat[b].poisson_ratio);
       e_pair[a * n_mat + b] = e;
-      c_pair[a * n_mat + b] = std::pow(4.0 * e / (3.0 * std::numbers::pi), 2);
+      c_pair[a * n_mat + b] = pair_constant(criterion, e);
     }
-    // wall_as_grain: the wall as a grain of the same material (E' of the alike pair).
-    e_wall[a] = s.params.wall_as_grain ? e_pair[a * n_mat + a]
-                                       : effective_modulus(mat[a].youngs_modulus, mat[a].poisson_ratio,
-                                                           std::numeric_limits<double>::infinity(), 0.0);
+    e_wall[a] = wall_modulus(criterion,
+                             effective_modulus(mat[a].youngs_modulus, mat[a].poisson_ratio,
+                                               std::numeric_limits<double>::infinity(), 0.0),
+                             e_pair[a * n_mat + a]);
   }
-  std::vector<double> inv_r(n), inv_s2(n), ratio(n, 0.0), largest2(n, 0.0);
+  std::vector<double> inv_r(n), grain_c(n), ratio(n, 0.0), largest2(n, 0.0);
   for (std::size_t i = 0; i < n; ++i) {
     inv_r[i] = 1.0 / p.radius[i];
-    inv_s2[i] = 1.0 / (s.strength[i] * s.strength[i]);
+    grain_c[i] = grain_constant(criterion, s.strength[i], 2.0 * p.radius[i]);
   }
   // The orienting contact of each grain: its partner (axis from the positions, computed only
   // for the grains that break) or, for a wall (partner -1), the wall's normal.
@@ -124,9 +133,8 @@ std::vector<BreakEvent> find_breaks(const DemSystem& sys, const BreakageState& s
         const std::size_t m = static_cast<std::size_t>(p.material[a]) * n_mat + static_cast<std::size_t>(p.material[b]);
         const double delta = p.radius[a] + p.radius[b] - dist;
         const double inv_r_eff = inv_r[a] + inv_r[b];
-        const double q = delta * c_pair[m] * inv_r_eff;
-        ratio[a] = std::max(ratio[a], q * inv_s2[a]);
-        ratio[b] = std::max(ratio[b], q * inv_s2[b]);
+        ratio[a] = std::max(ratio[a], pair_ratio(criterion, delta, inv_r_eff, c_pair[m], grain_c[a]));
+        ratio[b] = std::max(ratio[b], pair_ratio(criterion, delta, inv_r_eff, c_pair[m], grain_c[b]));
         // F^2 > largest2 without a division: (16/9) E'^2 delta^3 > largest2 / r'.
         const double k = 16.0 / 9.0 * e_pair[m] * e_pair[m] * delta * delta * delta;
         if (k > largest2[a] * inv_r_eff) largest2[a] = k / inv_r_eff, partner[a] = j;
@@ -135,20 +143,19 @@ std::vector<BreakEvent> find_breaks(const DemSystem& sys, const BreakageState& s
         ++grain_contacts[b];
       },
       [&](int i, int, const Vec3& normal, double, double force) {
-        // A wall: r' = the grain's radius (a plane), E' of the grain against a rigid wall, and the
-        // wall law's elastic normal force (no Hertz overlap relation for a linear wall spring;
-        // without the dashpot, as for grain pairs: docs/breakage.md).
+        // A wall: r' = the grain's radius (a plane) and the wall law's elastic normal force (no
+        // Hertz overlap relation for a linear wall spring; without the dashpot, as for grain
+        // pairs: docs/breakage.md).
         const auto a = static_cast<std::size_t>(i);
-        const double f_crit = critical_force(s.strength[a], p.radius[a], e_wall[static_cast<std::size_t>(p.material[a])]);
-        ratio[a] = std::max(ratio[a], force / f_crit);
+        const double e = e_wall[static_cast<std::size_t>(p.material[a])];
+        ratio[a] = std::max(ratio[a], wall_ratio(criterion, force, p.radius[a], e, s.strength[a]));
         if (force * force > largest2[a]) largest2[a] = force * force, partner[a] = -1, wall_axis[a] = normal;
         ++wall_contacts[a];
       });
   std::vector<BreakEvent> events;
   for (std::size_t g = 0; g < n; ++g) {
-    if (!(ratio[g] >= 1.0)) continue;
     const int coordination = counted_coordination(s.params, grain_contacts[g], wall_contacts[g]);
-    if (!may_break(s.params, 2.0 * p.radius[g], s.d50_initial, coordination)) continue;
+    if (!grain_breaks(s.params, 2.0 * p.radius[g], s.d50_initial, coordination, ratio[g])) continue;
     Vec3 axis = wall_axis[g];
     if (partner[g] >= 0) {
       const Vec3 d = p.x[static_cast<std::size_t>(partner[g])] - p.x[g];
@@ -157,6 +164,12 @@ std::vector<BreakEvent> find_breaks(const DemSystem& sys, const BreakageState& s
     events.push_back({static_cast<int>(g), axis});
   }
   return events;
+}
+
+}  // namespace
+
+std::vector<BreakEvent> find_breaks(const DemSystem& sys, const BreakageState& s) {
+  return std::visit([&](const auto& c) { return find_breaks_with(c, sys, s); }, s.params.criterion);
 }
 
 std::size_t apply_breaks(DemSystem& sys, BreakageState& s, const std::vector<BreakEvent>& events) {
@@ -178,7 +191,7 @@ std::size_t apply_breaks(DemSystem& sys, BreakageState& s, const std::vector<Bre
                      daughter_velocity(p.v[g]), p.omega[g]);
       const std::uint64_t id = daughter_id(s.id[g], k);
       ids.push_back(id);
-      strengths.push_back(strength_limit(s.params, 2.0 * daughters[k].radius, strength_variability(s.params, s.seed, id)));
+      strengths.push_back(strength_of(s.params, 2.0 * daughters[k].radius, s.seed, id));
       generations.push_back(static_cast<unsigned char>(std::min(254, s.generation[g] + 1)));
     }
     record_break(s.ledger, s.params, p.radius[g], s.generation[g]);

@@ -1,10 +1,12 @@
-// HC breakage criterion, strength variability streams and the two limits (breakage_model.hpp).
+// The breakage model's closed forms, the grains' random streams and the two limits
+// (breakage_model.hpp).
 #include "dem/breakage_model.hpp"
 
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
 #include <string_view>
+#include <variant>
 
 #include "core/errors.hpp"
 #include "core/hash.hpp"
@@ -41,22 +43,16 @@ void validate(const BreakageParams& p, const std::string& path) {
   const auto fail = [&](const char* key, const std::string& rule) {
     throw InputError("", path + "." + key, rule);
   };
-  if (!positive(p.sigma_lim0)) fail("sigma_lim0", "must be finite and > 0 Pa");
-  if (!positive(p.d0)) fail("d0", "must be finite and > 0 m");
-  if (!positive(p.m1)) fail("m1", "must be finite and > 0");
-  if (!(std::isfinite(p.var_a) && p.var_a != 0)) fail("var_a", "must be finite and non-zero");
-  if (!std::isfinite(p.var_b)) fail("var_b", "must be finite");
-  // Eq. 5.15 is linear in U, so its extremes over [0, 1] are the two ends.
-  const double at0 = -p.var_b / p.var_a, at1 = (1 - p.var_b) / p.var_a;
-  if (!(at0 > 0 && at1 > 0))
-    fail("var_b", "var = (U - var_b)/var_a must stay > 0 for U in [0, 1]; its ends are " +
-                      std::to_string(at0) + " (U = 0) and " + std::to_string(at1) + " (U = 1)");
+  std::visit([&](const auto& c) { validate(c, path); }, p.criterion);
   if (p.coordination_limit < 0) fail("coordination_limit", "must be >= 0 (0 switches it off)");
   if (!(p.comminution_factor > 0 && p.comminution_factor < 1))
     fail("comminution_factor", "must be in (0, 1)");
   if (!positive(p.fines_fractal_dimension)) fail("fines_fractal_dimension", "must be finite and > 0");
   if (!positive(p.fines_d_min)) fail("fines_d_min", "must be finite and > 0 m");
   if (!positive(p.hardin_threshold)) fail("hardin_threshold", "must be finite and > 0 m");
+  if (p.cadence.check_interval < 1) fail("check_interval", "must be >= 1");
+  if (!(p.cadence.check_period >= 0) || !std::isfinite(p.cadence.check_period))
+    fail("check_period", "must be >= 0 (s)");
 }
 
 void validate_against_d50(const BreakageParams& p, double d50_initial, const std::string& path) {
@@ -68,10 +64,6 @@ void validate_against_d50(const BreakageParams& p, double d50_initial, const std
                      "must be below the fines' d_max of the smallest grain that may break, "
                      "0.448 R = 0.224 x comminution_factor x d50 = " + std::to_string(d_max) +
                          " m");
-}
-
-double strength_limit(const BreakageParams& p, double diameter, double var) {
-  return p.sigma_lim0 * std::pow(diameter / p.d0, -3.0 / p.m1) * var;
 }
 
 double upscaled_sigma_lim0(double sigma_lim0_original, double upscaling_factor, double m1) {
@@ -97,23 +89,8 @@ double mean_hertz_pressure(double force, double r_eff, double e_eff) {
   return force / (std::numbers::pi * a * a);
 }
 
-double effective_radius(double r1, double r2) {
-  if (std::isinf(r2)) return r1;
-  return r1 * r2 / (r1 + r2);
-}
-
-double effective_modulus(double e1, double nu1, double e2, double nu2) {
-  const double c1 = (1 - nu1 * nu1) / e1;
-  const double c2 = std::isinf(e2) ? 0.0 : (1 - nu2 * nu2) / e2;
-  return 1.0 / (c1 + c2);
-}
-
 double strength_uniform(std::uint64_t seed, std::uint64_t grain_id) {
   return to_unit(stream_bits(seed, "kolsky.breakage.var", grain_id));
-}
-
-double strength_variability(const BreakageParams& p, std::uint64_t seed, std::uint64_t grain_id) {
-  return (strength_uniform(seed, grain_id) - p.var_b) / p.var_a;
 }
 
 double replacement_spin_angle(std::uint64_t seed, std::uint64_t grain_id) {
@@ -155,8 +132,8 @@ bool may_break(const BreakageParams& p, double diameter, double d50_initial, int
 }
 
 bool grain_breaks(const BreakageParams& p, double diameter, double d50_initial, int coordination,
-                  double force, double f_crit) {
-  return may_break(p, diameter, d50_initial, coordination) && force >= f_crit;
+                  double load_ratio) {
+  return load_ratio >= 1.0 && may_break(p, diameter, d50_initial, coordination);
 }
 
 double smallest_daughter_diameter(const BreakageParams& p, double d50_initial) {

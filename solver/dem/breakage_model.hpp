@@ -1,6 +1,7 @@
-// The Hertzian-contact (HC) breakage criterion of Ciantia et al. as the dissertation uses it
-// (Sec. 5.2.3; parameters and misprints in targets.md 5a/5e): pure functions of a grain and one
-// of its contacts, for the engine to call between steps.
+// The breakage model of Ciantia et al. as the dissertation uses it (Sec. 5.2.3; parameters and
+// misprints in targets.md 5a/5e): pure functions of a grain and one of its contacts, for the
+// engine to call between steps. The criterion itself is a type of breakage_criterion.hpp
+// (Eq. 5.13 by default); here the closed forms it rests on and what every criterion shares:
 //   Eq. 5.13 (corrected, 5e.5): break when F >= F_crit = sigma_lim^3 pi^3 (3 r'/(4 E'))^2, i.e.
 //     when the mean Hertz contact pressure F/(pi a^2) reaches sigma_lim, with
 //     sigma_lim = sigma_lim0 (d/d0)^(-3/m1) var;
@@ -15,17 +16,29 @@
 #include <cstdint>
 #include <string>
 
+#include "dem/breakage_criterion.hpp"
 #include "dem/vec3.hpp"
 
 namespace kolsky::dem {
 
-/// Parameters of the breakage model (scene keys: the field names, under specimen.breakage).
+/// How often the engine checks for breaks (docs/breakage.md, "Checks").
+struct BreakageCadence {
+  /// Steps between checks (>= 1). 50: a check costs about one step of the force sweep
+  /// (bench_dem BM_DemBreakageIdle), so every 50 steps it costs ~2 %; on the example scene
+  /// intervals 1, 10, 20 and 50 gave 39, 41, 40 and 39 breaks and B_r 0.443, 0.448, 0.437,
+  /// 0.443, the scatter of a chaotic DEM run (docs/breakage.md). 50 steps of a Chapter-5 dt
+  /// (~2e-9 s) are 0.1 us of a ~100 us loading.
+  int check_interval = 50;
+  /// Simulated time between checks (s); 0: every check_interval steps. For a run whose dt is
+  /// refined after breaks, where a step count is no fixed time (docs/breakage.md).
+  double check_period = 0.0;
+};
+
+/// Parameters of the breakage model (scene keys: the field names, under specimen.breakage;
+/// the criterion's under specimen.breakage too, selected by specimen.breakage.criterion).
 struct BreakageParams {
-  double sigma_lim0 = 2.7e9;  ///< Pa, strength of a d0 grain: Song, N = 2 (Sec. 5.3.3)
-  double d0 = 0.002;          ///< m, reference diameter of sigma_lim0 (Sec. 5.2.3)
-  double m1 = 3.0;            ///< Weibull modulus of the size effect (silica, Sec. 5.2.3)
-  double var_a = -1.22;       ///< Eq. 5.15 slope a (Hanley et al. 2015, silica)
-  double var_b = 1.67;        ///< Eq. 5.15 intercept b
+  /// Which grains are loaded past their strength: Eq. 5.13 (the text's) by default.
+  BreakageCriterion criterion = HertzianContactCriterion{};
   /// c_lim: a grain may break only with fewer than this many contacts (c_lim = 8, Secs.
   /// 5.3.1-5.3.3); 0 switches the criterion off (targets.md 5e.9).
   int coordination_limit = 8;
@@ -35,11 +48,6 @@ struct BreakageParams {
   /// least as well as a neighbour does; PFC3D 5.0 (the dissertation's code), as far as we know,
   /// counts ball-facet contacts in a ball's contact count unless told to filter them.
   bool count_wall_contacts = true;
-  /// Eq. 5.13 at a wall contact: false (default) takes the grain on a rigid plane, r' = r and
-  /// E' = E/(1 - nu^2); true takes E' of two alike grains, E/(2(1 - nu^2)) (the single-material
-  /// formula, with r' = r still), which makes F_crit four times larger there. The text's walls
-  /// are linear springs with no modulus, so it leaves this open (targets.md 5d).
-  bool wall_as_grain = false;
   double comminution_factor = 0.22;  ///< grains below this x d50 never break (Sec. 5.2.3)
   double fines_fractal_dimension = 2.6;  ///< alpha of the lost mass, Eq. 5.16
   double fines_d_min = 7.5e-6;       ///< m, d_min of Eq. 5.16 (Wang et al. 2018)
@@ -47,14 +55,13 @@ struct BreakageParams {
   /// upscaling factor, so that B_r of the upscaled curves equals B_r of the curves shifted
   /// back by N (B_r is an area in log d). Set by the scene from specimen.upscale.
   double hardin_threshold = 75e-6;
+  BreakageCadence cadence;
 };
 
-/// Throws kolsky::InputError("", path + "." + key, rule) on the first broken rule:
-/// sigma_lim0, d0, m1 finite and > 0; var_a finite and != 0; var_b finite, with both ends of
-/// Eq. 5.15's range, var(U = 0) = -b/a and var(U = 1) = (1-b)/a, > 0 (else named at var_b);
-/// coordination_limit >= 0; comminution_factor in (0, 1); fines_fractal_dimension finite, > 0 (alpha >= 3
+/// Throws kolsky::InputError("", path + "." + key, rule) on the first broken rule: the
+/// criterion's (breakage_criterion.hpp), then coordination_limit >= 0; comminution_factor in (0, 1); fines_fractal_dimension finite, > 0 (alpha >= 3
 /// is allowed: psd::fractal_passing_fraction takes it, alpha = 3 as the log limit); fines_d_min
-/// finite and > 0.
+/// finite and > 0; cadence.check_interval >= 1, cadence.check_period finite and >= 0.
 void validate(const BreakageParams& p, const std::string& path = "specimen.breakage");
 
 /// The rules that need the specimen's initial d50 (m): the fines of the smallest grain that
@@ -62,9 +69,6 @@ void validate(const BreakageParams& p, const std::string& path = "specimen.break
 /// comminution_factor x d50 (else Eq. 5.16 is empty). Throws InputError at path.fines_d_min.
 void validate_against_d50(const BreakageParams& p, double d50_initial,
                           const std::string& path = "specimen.breakage");
-
-/// sigma_lim = sigma_lim0 (d/d0)^(-3/m1) var (Pa; Eq. 5.13 size effect). d in m, var > 0.
-double strength_limit(const BreakageParams& p, double diameter, double var);
 
 /// Eq. 5.17: sigma_lim0 for an N-times upscaled specimen from that of the original (N = 1).
 double upscaled_sigma_lim0(double sigma_lim0_original, double upscaling_factor, double m1);
@@ -83,16 +87,6 @@ double critical_overlap(double sigma_lim, double r_eff, double e_eff);
 /// Mean Hertz contact pressure F / (pi a^2) at normal force F (Pa), the left side of the
 /// criterion in pressure form; equals sigma_lim exactly at critical_force.
 double mean_hertz_pressure(double force, double r_eff, double e_eff);
-
-/// r' = (1/r1 + 1/r2)^-1 (m); r2 = +inf (a plane wall) gives r1 exactly.
-double effective_radius(double r1, double r2);
-/// E' = ((1 - nu1^2)/E1 + (1 - nu2^2)/E2)^-1 (Pa); E2 = +inf (rigid wall) drops its term.
-double effective_modulus(double e1, double nu1, double e2, double nu2);
-
-/// Eq. 5.15: var = (U - b)/a with U in [0, 1) the grain's own uniform draw: a function of
-/// (seed, grain_id) only, so the same grain gets the same var whatever the thread count, the
-/// order grains are checked in, or a restart. In ((1-b)/a, -b/a] for a < 0.
-double strength_variability(const BreakageParams& p, std::uint64_t seed, std::uint64_t grain_id);
 
 /// The U of Eq. 5.15 for (seed, grain_id): output grain_id + 1 of the SplitMix64 stream keyed
 /// by (seed, purpose "kolsky.breakage.var"), top 53 bits, in [0, 1). Pure: no state.
@@ -122,10 +116,11 @@ double comminution_diameter(const BreakageParams& p, double d50_initial);
 bool above_comminution_limit(const BreakageParams& p, double diameter, double d50_initial);
 /// Both limits together: the grain may break if its force criterion holds.
 bool may_break(const BreakageParams& p, double diameter, double d50_initial, int coordination);
-/// The whole decision for one grain: may_break(...) and force >= f_crit, where force and f_crit
-/// (critical_force with that contact's r' and E') belong to the grain's most critical contact.
+/// The whole decision for one grain (what the engine calls): may_break(...) and load_ratio >= 1,
+/// where load_ratio is the criterion's largest over the grain's contacts (breakage_criterion.hpp;
+/// for Eq. 5.13, F / F_crit of the grain's most critical contact).
 bool grain_breaks(const BreakageParams& p, double diameter, double d50_initial, int coordination,
-                  double force, double f_crit);
+                  double load_ratio);
 /// Smallest grain breakage can ever create (m): the smallest daughter (0.2240 R) of the
 /// smallest grain that may break, 0.224 x comminution_factor x d50. For a dt fixed up front.
 double smallest_daughter_diameter(const BreakageParams& p, double d50_initial);

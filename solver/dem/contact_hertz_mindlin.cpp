@@ -6,15 +6,12 @@
 
 #include "core/errors.hpp"
 #include "dem/contact_damping.hpp"
+#include "dem/hertz.hpp"
 
 namespace kolsky::dem {
 
 namespace {
 // Compliance terms; an infinite modulus (rigid wall) gives 0.
-double normal_compliance(const Material& m) {
-  return std::isinf(m.youngs_modulus)
-             ? 0.0 : (1 - m.poisson_ratio * m.poisson_ratio) / m.youngs_modulus;
-}
 double shear_compliance(const Material& m) {
   return std::isinf(m.youngs_modulus)
              ? 0.0
@@ -23,7 +20,7 @@ double shear_compliance(const Material& m) {
 }  // namespace
 
 double effective_modulus(const Material& a, const Material& b) {
-  return 1.0 / (normal_compliance(a) + normal_compliance(b));
+  return effective_modulus(a.youngs_modulus, a.poisson_ratio, b.youngs_modulus, b.poisson_ratio);
 }
 
 double effective_shear_modulus(const Material& a, const Material& b) {
@@ -72,8 +69,7 @@ double HertzImpact::max_overlap() const {
 }
 
 double HertzImpact::peak_force() const {
-  const double d = max_overlap();
-  return 4.0 / 3.0 * e_star * std::sqrt(r_eff) * d * std::sqrt(d);
+  return hertz_normal_force(e_star, r_eff, max_overlap());
 }
 
 double HertzImpact::contact_time() const {

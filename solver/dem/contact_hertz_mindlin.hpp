@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "dem/contact_pieces.hpp"
+#include "dem/hertz.hpp"
 #include "dem/particles.hpp"
 
 namespace kolsky::dem {

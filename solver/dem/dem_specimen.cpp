@@ -79,14 +79,8 @@ FaceForces DemSpecimen::forces(const FaceState& faces) {
   return {f.front - forces_0_.front, f.back - forces_0_.back};
 }
 
-void DemSpecimen::enable_breakage(const BreakageParams& p, std::uint64_t seed, int check_interval,
-                                  double check_period) {
-  if (check_interval < 1) throw InputError("", "specimen.breakage.check_interval", "must be >= 1");
-  if (!(check_period >= 0) || !std::isfinite(check_period))
-    throw InputError("", "specimen.breakage.check_period", "must be >= 0 (s)");
-  check_period_ = check_period;
-  breakage_ = start_breakage(p, seed, sys_.particles());
-  check_interval_ = check_interval;
+void DemSpecimen::enable_breakage(const BreakageParams& p, std::uint64_t seed) {
+  breakage_ = start_breakage(p, seed, sys_.particles());  // validates p, cadence included
 }
 
 std::size_t DemSpecimen::apply_due_breaks() {
@@ -96,12 +90,13 @@ std::size_t DemSpecimen::apply_due_breaks() {
   if (held_ || breaks_done_) return 0;
   breaks_done_ = true;
   if (!breakage_) return 0;
-  if (check_period_ > 0) {
+  const BreakageCadence& cadence = breakage_->params.cadence;
+  if (cadence.check_period > 0) {
     // Due once the steps since the last check span the period (to the round-off of their sum).
-    if (time_since_check_ < check_period_ * (1 - 1e-9)) return 0;
+    if (time_since_check_ < cadence.check_period * (1 - 1e-9)) return 0;
     time_since_check_ = 0;
   } else {
-    if (++steps_since_check_ < check_interval_) return 0;
+    if (++steps_since_check_ < cadence.check_interval) return 0;
     steps_since_check_ = 0;
   }
   return apply_breaks(sys_, *breakage_, find_breaks(sys_, *breakage_));
@@ -111,7 +106,7 @@ void DemSpecimen::advance(double dt) {
   if (held_) return;
   apply_due_breaks();
   breaks_done_ = false;
-  if (check_period_ > 0) time_since_check_ += dt;
+  if (breakage_ && breakage_->params.cadence.check_period > 0) time_since_check_ += dt;
   sys_.begin_step(dt);
   stepping_ = true;
 }

@@ -84,15 +84,15 @@ class DemSpecimen {
   /// advance(); a specimen is driven one way or the other, never both.
   DemSystem& coupled_system() { return sys_; }
 
-  /// Turns on particle breakage (Sec. 5.2.3, breakage_engine.hpp): every check_interval steps,
-  /// between two steps, the grains that meet the criteria are replaced by their daughters.
-  /// The system must have been built with DemOptions::smallest_radius_to_come covering the
-  /// daughters (make_dem_specimen does). Throws InputError for bad parameters.
-  /// check_period > 0 (s) checks instead once that much simulated time has passed since the
-  /// last check: the same cadence in time whatever dt is (a run whose dt is refined after
-  /// breaks starts at a step several times the up-front one; docs/breakage.md, "Checks").
-  void enable_breakage(const BreakageParams& p, std::uint64_t seed, int check_interval,
-                       double check_period = 0.0);
+  /// Turns on particle breakage (Sec. 5.2.3, breakage_engine.hpp): every
+  /// p.cadence.check_interval steps, between two steps, the grains that meet the criteria are
+  /// replaced by their daughters. The system must have been built with
+  /// DemOptions::smallest_radius_to_come covering the daughters (make_dem_specimen does).
+  /// Throws InputError for bad parameters. p.cadence.check_period > 0 (s) checks instead once
+  /// that much simulated time has passed since the last check: the same cadence in time
+  /// whatever dt is (a run whose dt is refined after breaks starts at a step several times the
+  /// up-front one; docs/breakage.md, "Checks").
+  void enable_breakage(const BreakageParams& p, std::uint64_t seed);
   /// The breakage state (nullptr without breakage).
   const BreakageState* breakage() const { return breakage_ ? &*breakage_ : nullptr; }
   int front_plane() const { return front_; }
@@ -125,9 +125,7 @@ class DemSpecimen {
   FaceState held_faces_;    // faces at the last held call
   double held_work_ = 0;    // work of the faces on the held specimen, J
   std::optional<BreakageState> breakage_;
-  int check_interval_ = 1;
   long steps_since_check_ = 0;
-  double check_period_ = 0;       // s; 0: every check_interval_ steps
   double time_since_check_ = 0;   // s, advanced by advance(dt)
   bool breaks_done_ = false;  // apply_due_breaks ran for the step advance() is about to take
   std::optional<RestRelaxationOutcome> rest_;

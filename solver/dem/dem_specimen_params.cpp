@@ -32,17 +32,17 @@ DemSpecimen make_dem_specimen(const DemSpecimenParams& p) {
         throw InputError("", "dem.rest", "needs a rigid tube: a compliant tube's displacement is not "
                                          "carried from the relaxation into the run");
     }
-    PackingResult packed = cached_packing(p.packing, p.packing_cache).result;
+    PackingResult packed = cached_packing(p.packing, p.packing_store).result;
     SpecimenWalls walls = p.walls;
     walls.length = p.packing.length;
     walls.radius = 0.5 * p.packing.diameter;
     std::vector<Material> materials{p.packing.material};
     DemOptions options = p.options;
     if (p.breakage) {
-      // Eq. 5.13 is a Hertz contact-pressure criterion: it needs the Hertz contact of the grains.
+      // The criteria read the Hertz overlap, r' and E' (breakage_criterion.hpp).
       if (!std::holds_alternative<HertzMindlinParams>(p.contact))
-        throw InputError("", "specimen.breakage", "needs specimen.contact_law = hertz_mindlin (Eq. 5.13 "
-                                                  "is a criterion on the Hertz contact pressure)");
+        throw InputError("", "specimen.breakage", "needs specimen.contact_law = hertz_mindlin (the "
+                                                  "breakage criteria read the Hertz overlap)");
       validate(*p.breakage);
       // A step fixed up front must already suit the smallest daughter the comminution limit
       // allows; a re-planned one follows the grains present.
@@ -83,7 +83,7 @@ DemSpecimen make_dem_specimen(const DemSpecimenParams& p) {
                          options, history);
     if (rest) specimen.set_rest_relaxation(*rest);
     if (p.breakage)
-      specimen.enable_breakage(*p.breakage, seed, p.breakage_check_interval, p.breakage_check_period);
+      specimen.enable_breakage(*p.breakage, seed);
     return specimen;
   } catch (const InputError& e) {
     throw rename_input_error(e, p.input_names);

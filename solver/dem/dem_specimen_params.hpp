@@ -31,19 +31,10 @@ struct DemSpecimenParams {
   ContactLawParams contact;       ///< grain-grain law and its parameters (Hertz-Mindlin default)
   SpecimenWalls walls;            ///< end planes and tube (length/radius follow the packing)
   DemOptions options;             ///< rolling retardation, skin, dt safety
-  std::string packing_cache;      ///< cache directory (packing_cache.hpp); "" = none
+  PackingStore packing_store;     ///< where packings are reused (packing_cache.hpp); empty = none
   /// Particle breakage (Sec. 5.2.3; docs/breakage.md); none: no grain ever breaks, and the
   /// specimen is bitwise what it was before breakage existed. Needs the Hertz-Mindlin law.
   std::optional<BreakageParams> breakage;
-  /// Steps between breakage checks (>= 1). 50: a check costs about one step of the force sweep
-  /// (bench_dem BM_DemBreakageIdle), so every 50 steps it costs ~2 %; on the example scene
-  /// intervals 1, 10, 20 and 50 gave 39, 41, 40 and 39 breaks and B_r 0.443, 0.448, 0.437,
-  /// 0.443, the scatter of a chaotic DEM run (docs/breakage.md). 50 steps of a Chapter-5 dt
-  /// (~2e-9 s) are 0.1 us of a ~100 us loading.
-  int breakage_check_interval = 50;
-  /// Simulated time between breakage checks (s); 0: every breakage_check_interval steps. For a
-  /// run whose dt is refined after breaks, where a step count is no fixed time (docs/breakage.md).
-  double breakage_check_period = 0.0;
   /// Whether stable_dt() covers, from the start, the smallest daughter the comminution limit
   /// allows (DemOptions::smallest_radius_to_come). True for a run whose dt is fixed for its
   /// whole length; false for one that asks the limit again after every break and refines its
@@ -58,7 +49,7 @@ struct DemSpecimenParams {
   std::vector<InputName> input_names;  ///< for errors while building (empty: physics names)
 };
 
-/// Packs the grains (generate_packing, through the cache when p.packing_cache is set) and
+/// Packs the grains (generate_packing, through p.packing_store when it has one) and
 /// builds the specimen between the two end planes with the law p.contact selects. An
 /// InputError thrown meanwhile is renamed through p.input_names (rename_input_error).
 DemSpecimen make_dem_specimen(const DemSpecimenParams& p);

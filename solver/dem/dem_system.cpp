@@ -15,6 +15,7 @@
 #include "core/errors.hpp"
 #include "core/stability_check.hpp"
 #include "dem/contact_hertz_mindlin.hpp"
+#include "dem/integrator.hpp"
 
 namespace kolsky::dem {
 
@@ -226,29 +227,10 @@ void DemSystem::finish_step() {
   step_threads_ = 0;
 }
 
-// The half kick and the drift in one pass over the grains (one parallel region, one barrier,
-// v read once): per grain the same operations in the same order as a kick loop followed by a
-// drift loop, so the results are bitwise those of the separate loops.
+// The grains by the integrator (integrator.hpp), then the walls: tubes' half kick, planes and
+// tubes drift.
 void DemSystem::kick_drift(double h, double dt) {
-  const auto n = static_cast<std::ptrdiff_t>(p_.size());
-  Vec3* x = p_.x.data();
-  Vec3* v = p_.v.data();
-  Vec3* w = p_.omega.data();
-  const Vec3* f = p_.f.data();
-  const Vec3* t = p_.torque.data();
-  const double* m = p_.mass.data();
-  const double* in = p_.inertia.data();
-  const bool track = list_valid_;
-  const Vec3* x0 = x_at_build_.data();
-  double md = max_disp2_;
-#pragma omp parallel for schedule(static) reduction(max : md) if (n >= kParallelMin)
-  for (std::ptrdiff_t i = 0; i < n; ++i) {
-    v[i] += (h / m[i]) * f[i];
-    w[i] += (h / in[i]) * t[i];
-    x[i] += dt * v[i];
-    if (track) md = std::max(md, norm2(x[i] - x0[i]));
-  }
-  max_disp2_ = md;
+  max_disp2_ = dem::kick_drift(p_, h, dt, list_valid_ ? x_at_build_.data() : nullptr, max_disp2_);
   kick_tubes(h);
   for (auto& s : planes_) {
     if (const auto* pr = std::get_if<PrescribedPlane>(&s.wall.motion)) {
@@ -259,28 +241,9 @@ void DemSystem::kick_drift(double h, double dt) {
   for (auto& tb : tubes_) tb.u += dt * tb.u_dot;
 }
 
-// The second half kick and the rotational retardation (Eqs. 4.12-4.14) in one pass, bitwise
-// the separate loops (as kick_drift).
+// Second half kick and the rotational retardation (Eqs. 4.12-4.14) of the grains, then the tubes.
 void DemSystem::kick_retard(double h, double dt) {
-  const double k = opt_.rolling.factor(dt);
-  const bool retarding = k != 1.0;
-  const auto n = static_cast<std::ptrdiff_t>(p_.size());
-  Vec3* v = p_.v.data();
-  Vec3* w = p_.omega.data();
-  const Vec3* f = p_.f.data();
-  const Vec3* t = p_.torque.data();
-  const double* m = p_.mass.data();
-  const double* in = p_.inertia.data();
-  double* d = dissipated_.data();
-#pragma omp parallel for schedule(static) if (n >= kParallelMin)
-  for (std::ptrdiff_t i = 0; i < n; ++i) {
-    v[i] += (h / m[i]) * f[i];
-    w[i] += (h / in[i]) * t[i];
-    if (retarding) {
-      d[i] += 0.5 * in[i] * norm2(w[i]) * (1 - k * k);
-      w[i] *= k;
-    }
-  }
+  dem::kick_retard(p_, h, opt_.rolling.factor(dt), dissipated_);
   kick_tubes(h);
 }
 

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "core/rng.hpp"
+#include "dem/hertz.hpp"
 #include "dem/packing_internal.hpp"
 #include "psd/sampling.hpp"
 
@@ -206,10 +207,10 @@ void take_census(PackingResult& res, const PackingParams& in) {
     const Census c = contact_census(
         q, in.diameter, L,
         [&](double delta, double ri, double rj) {
-          return 4.0 / 3.0 * e_pair * std::sqrt(ri * rj / (ri + rj)) * delta * std::sqrt(delta);
+          return hertz_normal_force(e_pair, ri * rj / (ri + rj), delta);
         },
         [&](double delta, double r) {
-          return 4.0 / 3.0 * e_wall * std::sqrt(r) * delta * std::sqrt(delta);
+          return hertz_normal_force(e_wall, r, delta);
         });
     const double nn = static_cast<double>(q.size());
     res.coordination = 2.0 * static_cast<double>(c.pairs) / nn;

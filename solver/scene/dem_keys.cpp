@@ -65,6 +65,67 @@ const std::vector<LawKey<dem::LinearParams>>& wall_keys() {
   return keys;
 }
 
+const std::vector<BreakageKey<dem::HertzianContactCriterion>>& breakage_keys(
+    const dem::HertzianContactCriterion&) {
+  using P = dem::HertzianContactCriterion;
+  static const std::vector<BreakageKey<P>> keys = {
+      {"sigma_lim0", &P::sigma_lim0, "Pa", kPositive,
+       "Strength of a d0 grain, Eq. 5.13 (Song N = 2: 2.7e9; Wang 1.53e9 / 2.37e9, Huang 3.6e9, "
+       "Sec. 5.3); grows with the upscaling factor, Eq. 5.17"},
+      {"d0", &P::d0, "m", kPositive, "Reference diameter of sigma_lim0 (Sec. 5.2.3: 2 mm)"},
+      {"m1", &P::m1, "-", kPositive, "Weibull modulus of the size effect (Sec. 5.2.3: 3, silica)"},
+      {"var_a", &P::var_a, "-", kNoRange,
+       "Eq. 5.15 slope a of var = (U - b)/a (Sec. 5.2.3: -1.22); must not be 0"},
+      {"var_b", &P::var_b, "-", kNoRange,
+       "Eq. 5.15 intercept b (Sec. 5.2.3: 1.67); var must stay > 0 over U in [0, 1)"},
+      {"wall_as_grain", &P::wall_as_grain, "-", kNoRange,
+       "Eq. 5.13 at a wall contact takes E' of two alike grains, E/(2(1 - nu^2)), instead of the "
+       "grain on a rigid plane, E/(1 - nu^2): F_crit four times larger (the text leaves it open; "
+       "docs/breakage.md)"}};
+  return keys;
+}
+
+const std::vector<BreakageKey<dem::ConstantStressCriterion>>& breakage_keys(
+    const dem::ConstantStressCriterion&) {
+  using P = dem::ConstantStressCriterion;
+  static const std::vector<BreakageKey<P>> keys = {
+      {"characteristic_stress", &P::characteristic_stress, "Pa", kPositive,
+       "A grain of diameter d breaks when one contact's elastic normal force reaches this x d^2 "
+       "(McDowell and Bolton 1998; no size effect, no scatter; docs/breakage.md)"}};
+  return keys;
+}
+
+const std::vector<BreakageKey<dem::BreakageParams>>& breakage_limit_keys() {
+  using P = dem::BreakageParams;
+  static const std::vector<BreakageKey<P>> keys = {
+      {"coordination_limit", &P::coordination_limit, "-", kNonNegative,
+       "c_lim: only grains with fewer contacts break (Secs. 5.3.1-5.3.3: 8); 0 = no limit "
+       "(targets.md 5e.9)"},
+      {"count_wall_contacts", &P::count_wall_contacts, "-", kNoRange,
+       "Wall contacts count towards the coordination number (the text leaves it open; "
+       "docs/breakage.md)"},
+      {"comminution_factor", &P::comminution_factor, "-", kOpenUnit,
+       "Grains below this x d50 of the initial grains never break (Sec. 5.2.3: 0.22)"},
+      {"fines_fractal_dimension", &P::fines_fractal_dimension, "-", kPositive,
+       "alpha of Eq. 5.16 for the lost mass (Sec. 5.2.3: 2.6)"},
+      {"fines_d_min", &P::fines_d_min, "m", kPositive,
+       "d_min of Eq. 5.16, the smallest size of the fines (Wang: 7.5e-6)"}};
+  return keys;
+}
+
+const std::vector<BreakageKey<dem::BreakageCadence>>& breakage_cadence_keys() {
+  using P = dem::BreakageCadence;
+  static const std::vector<BreakageKey<P>> keys = {
+      {"check_interval", &P::check_interval, "-", Range{1.0, kInf, false, false},
+       "Steps between breakage checks (a check costs about one step; 1: every step; "
+       "docs/breakage.md)"},
+      {"check_period", &P::check_period, "s", kNonNegative,
+       "Simulated time between breakage checks; 0 = every check_interval steps. Set it where dt "
+       "is refined after breaks (time.refine_after_breaks), so the checks keep their cadence in "
+       "time (docs/breakage.md 'Checks')"}};
+  return keys;
+}
+
 namespace {
 template <class P>
 void add_names(std::vector<dem::InputName>& out, const std::vector<LawKey<P>>& keys,

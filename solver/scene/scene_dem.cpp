@@ -4,8 +4,11 @@
 #include <cstdint>
 #include <filesystem>
 #include <stdexcept>
+#include <type_traits>
+#include <variant>
 
 #include "core/errors.hpp"
+#include "io/packing_files.hpp"
 #include "psd/sampling.hpp"
 #include "scene/csv_load.hpp"
 #include "scene/dem_keys.hpp"
@@ -20,6 +23,21 @@ namespace fs = std::filesystem;
 template <class P>
 void read_keys(JsonReader& r, const std::vector<LawKey<P>>& keys, P& p) {
   for (const LawKey<P>& k : keys) p.*k.field = r.number("specimen." + k.key);
+}
+
+template <class P>
+void read_breakage_keys(JsonReader& r, const std::vector<BreakageKey<P>>& keys, P& p) {
+  for (const BreakageKey<P>& k : keys) {
+    const std::string path = "specimen.breakage." + k.key;
+    std::visit(
+        [&](auto field) {
+          using T = std::remove_cvref_t<decltype(p.*field)>;
+          if constexpr (std::is_same_v<T, bool>) p.*field = r.boolean(path);
+          else if constexpr (std::is_same_v<T, int>) p.*field = r.integer(path);
+          else p.*field = r.number(path);
+        },
+        k.field);
+  }
 }
 
 // Whether the packing will draw any grain (psd::holds_a_grain: the draw of
@@ -80,8 +98,9 @@ dem::DemSpecimenParams read_dem_specimen(JsonReader& r, const std::string& base_
   if (std::string cache = r.text("specimen.packing_cache"); !cache.empty()) {
     fs::path cp(cache);  // relative to the scene file's folder, like the CSV paths
     if (cp.is_relative()) cp = fs::path(base_dir.empty() ? "." : base_dir) / cp;
-    d.packing_cache = fs::absolute(cp).lexically_normal().string();
-    r.resolve("specimen.packing_cache", d.packing_cache);
+    const std::string folder = fs::absolute(cp).lexically_normal().string();
+    d.packing_store = io::packing_files(folder);
+    r.resolve("specimen.packing_cache", folder);
   }
   d.walls.hold_until_loaded = r.boolean("specimen.hold_until_loaded");
   d.walls.preload_on_supports = r.boolean("specimen.preload_on_supports");
@@ -118,28 +137,19 @@ dem::DemSpecimenParams read_dem_specimen(JsonReader& r, const std::string& base_
   if (r.has("specimen.breakage")) {  // absent: no breakage, and the resolved scene has none
     const std::string p = "specimen.breakage.";
     dem::BreakageParams b;
-    b.sigma_lim0 = r.number(p + "sigma_lim0");
-    b.d0 = r.number(p + "d0");
-    b.m1 = r.number(p + "m1");
-    b.var_a = r.number(p + "var_a");
-    b.var_b = r.number(p + "var_b");
-    b.coordination_limit = r.integer(p + "coordination_limit");
-    b.count_wall_contacts = r.boolean(p + "count_wall_contacts");
-    b.wall_as_grain = r.boolean(p + "wall_as_grain");
-    b.comminution_factor = r.number(p + "comminution_factor");
-    b.fines_fractal_dimension = r.number(p + "fines_fractal_dimension");
-    b.fines_d_min = r.number(p + "fines_d_min");
+    b.criterion = dem::default_criterion(r.text(p + "criterion"));
+    std::visit([&](auto& c) { read_breakage_keys(r, breakage_keys(c), c); }, b.criterion);
+    read_breakage_keys(r, breakage_limit_keys(), b);
+    read_breakage_keys(r, breakage_cadence_keys(), b.cadence);
     b.hardin_threshold *= r.number("specimen.upscale");  // 75 um at the original grain scale
-    d.breakage_check_interval = r.integer(p + "check_interval");
-    d.breakage_check_period = r.number(p + "check_period");
     try {
       dem::validate(b);  // the rules between keys (var range, var_a != 0), before any packing
     } catch (const InputError& e) {
       r.fail(e.path(), e.rule());
     }
     if (!std::holds_alternative<dem::HertzMindlinParams>(d.contact))
-      r.fail("specimen.breakage", "needs specimen.contact_law = hertz_mindlin (Eq. 5.13 is a criterion on the "
-                                  "Hertz contact pressure)");
+      r.fail("specimen.breakage", "needs specimen.contact_law = hertz_mindlin (the breakage criteria read the "
+                                  "Hertz overlap: docs/breakage.md)");
     d.breakage = b;
   }
   d.input_names = dem_input_names(d.contact);

@@ -2,6 +2,8 @@
 // grain contact law and its parameters, rotational resistance, walls. Every default comes from
 // a struct initialiser in solver/dem/ (the laws' through dem_keys.cpp).
 #include <string>
+#include <type_traits>
+#include <variant>
 
 #include "dem/dem_specimen_params.hpp"
 #include "scene/dem_keys.hpp"
@@ -18,6 +20,22 @@ void add_keys(TableBuilder& s, const std::vector<LawKey<P>>& keys, const std::st
   for (const LawKey<P>& k : keys)
     s.add(VT::number, "specimen." + k.key, defaults.*k.field, k.unit, k.range, k.description,
           applies);
+}
+
+// Breakage keys (dem_keys.hpp), each row typed by its field.
+template <class P>
+void add_breakage_keys(TableBuilder& s, const std::vector<BreakageKey<P>>& keys, const std::string& applies) {
+  const P defaults{};
+  for (const BreakageKey<P>& k : keys) {
+    const std::string path = "specimen.breakage." + k.key;
+    std::visit(
+        [&](auto field) {
+          using T = std::remove_cvref_t<decltype(defaults.*field)>;
+          const VT type = std::is_same_v<T, bool> ? VT::boolean : std::is_same_v<T, int> ? VT::integer : VT::number;
+          s.add(type, path, defaults.*field, k.unit, k.range, k.description, applies);
+        },
+        k.field);
+  }
 }
 
 }  // namespace
@@ -118,43 +136,19 @@ void add_dem_rows(TableBuilder& s) {
 
 void add_breakage_rows(TableBuilder& s, const std::string& dem) {
   // Particle breakage (Sec. 5.2.3; docs/breakage.md): used only when the specimen.breakage
-  // object is present; without it no grain breaks.
-  const dem::BreakageParams b;
-  const std::string p = "specimen.breakage.";
-  const Range at_least_one{1.0, kInf, false, false};
-  s.add(VT::number, p + "sigma_lim0", b.sigma_lim0, "Pa", kPositive,
-        "Strength of a d0 grain, Eq. 5.13 (Song N = 2: 2.7e9; Wang 1.53e9 / 2.37e9, Huang 3.6e9, "
-        "Sec. 5.3); grows with the upscaling factor, Eq. 5.17", dem);
-  s.add(VT::number, p + "d0", b.d0, "m", kPositive, "Reference diameter of sigma_lim0 (Sec. 5.2.3: 2 mm)", dem);
-  s.add(VT::number, p + "m1", b.m1, "-", kPositive, "Weibull modulus of the size effect (Sec. 5.2.3: 3, silica)",
-        dem);
-  s.add(VT::number, p + "var_a", b.var_a, "-", kNoRange,
-        "Eq. 5.15 slope a of var = (U - b)/a (Sec. 5.2.3: -1.22); must not be 0", dem);
-  s.add(VT::number, p + "var_b", b.var_b, "-", kNoRange,
-        "Eq. 5.15 intercept b (Sec. 5.2.3: 1.67); var must stay > 0 over U in [0, 1)", dem);
-  s.add(VT::integer, p + "coordination_limit", b.coordination_limit, "-", kNonNegative,
-        "c_lim: only grains with fewer contacts break (Secs. 5.3.1-5.3.3: 8); 0 = no limit "
-        "(targets.md 5e.9)", dem);
-  s.add(VT::boolean, p + "count_wall_contacts", b.count_wall_contacts, "-", kNoRange,
-        "Wall contacts count towards the coordination number (the text leaves it open; "
-        "docs/breakage.md)", dem);
-  s.add(VT::boolean, p + "wall_as_grain", b.wall_as_grain, "-", kNoRange,
-        "Eq. 5.13 at a wall contact takes E' of two alike grains, E/(2(1 - nu^2)), instead of the "
-        "grain on a rigid plane, E/(1 - nu^2): F_crit four times larger (the text leaves it open; "
-        "docs/breakage.md)", dem);
-  s.add(VT::number, p + "comminution_factor", b.comminution_factor, "-", kOpenUnit,
-        "Grains below this x d50 of the initial grains never break (Sec. 5.2.3: 0.22)", dem);
-  s.add(VT::number, p + "fines_fractal_dimension", b.fines_fractal_dimension, "-", kPositive,
-        "alpha of Eq. 5.16 for the lost mass (Sec. 5.2.3: 2.6)", dem);
-  s.add(VT::number, p + "fines_d_min", b.fines_d_min, "m", kPositive,
-        "d_min of Eq. 5.16, the smallest size of the fines (Wang: 7.5e-6)", dem);
-  s.add(VT::integer, p + "check_interval", dem::DemSpecimenParams{}.breakage_check_interval, "-", at_least_one,
-        "Steps between breakage checks (a check costs about one step; 1: every step; "
-        "docs/breakage.md)", dem);
-  s.add(VT::number, p + "check_period", dem::DemSpecimenParams{}.breakage_check_period, "s", kNonNegative,
-        "Simulated time between breakage checks; 0 = every check_interval steps. Set it where dt "
-        "is refined after breaks (time.refine_after_breaks), so the checks keep their cadence in "
-        "time (docs/breakage.md 'Checks')", dem);
+  // object is present; without it no grain breaks. The criterion's keys apply only to it.
+  std::vector<std::string> names(dem::kBreakageCriterionNames.begin(), dem::kBreakageCriterionNames.end());
+  s.add(VT::choice, "specimen.breakage.criterion",
+        std::string(dem::kBreakageCriterionNames[dem::BreakageParams{}.criterion.index()]), "-", kNoRange,
+        "Which grains are loaded past their strength: hertzian_contact (Eq. 5.13, the text's) or "
+        "constant_stress (F >= sigma_c d^2, McDowell and Bolton 1998; no chapter uses it; "
+        "docs/breakage.md)",
+        dem, names);
+  for (const std::string& name : names)
+    std::visit([&](const auto& c) { add_breakage_keys(s, breakage_keys(c), "specimen.breakage.criterion=" + name); },
+               dem::default_criterion(name));
+  add_breakage_keys(s, breakage_limit_keys(), dem);
+  add_breakage_keys(s, breakage_cadence_keys(), dem);
 }
 
 }  // namespace kolsky::scene::table

@@ -1,0 +1,50 @@
+// The grains' kick-drift-kick integrator (integrator.hpp).
+#include "dem/integrator.hpp"
+
+#include <algorithm>
+
+namespace kolsky::dem {
+
+double kick_drift(Particles& p, double h, double dt, const Vec3* x_at_build, double max_disp2) {
+  const auto n = static_cast<std::ptrdiff_t>(p.size());
+  Vec3* x = p.x.data();
+  Vec3* v = p.v.data();
+  Vec3* w = p.omega.data();
+  const Vec3* f = p.f.data();
+  const Vec3* t = p.torque.data();
+  const double* m = p.mass.data();
+  const double* in = p.inertia.data();
+  const bool track = x_at_build != nullptr;
+  double md = max_disp2;
+#pragma omp parallel for schedule(static) reduction(max : md) if (n >= kIntegratorParallelMin)
+  for (std::ptrdiff_t i = 0; i < n; ++i) {
+    v[i] += (h / m[i]) * f[i];
+    w[i] += (h / in[i]) * t[i];
+    x[i] += dt * v[i];
+    if (track) md = std::max(md, norm2(x[i] - x_at_build[i]));
+  }
+  return md;
+}
+
+void kick_retard(Particles& p, double h, double k, std::vector<double>& dissipated) {
+  const bool retarding = k != 1.0;
+  const auto n = static_cast<std::ptrdiff_t>(p.size());
+  Vec3* v = p.v.data();
+  Vec3* w = p.omega.data();
+  const Vec3* f = p.f.data();
+  const Vec3* t = p.torque.data();
+  const double* m = p.mass.data();
+  const double* in = p.inertia.data();
+  double* d = dissipated.data();
+#pragma omp parallel for schedule(static) if (n >= kIntegratorParallelMin)
+  for (std::ptrdiff_t i = 0; i < n; ++i) {
+    v[i] += (h / m[i]) * f[i];
+    w[i] += (h / in[i]) * t[i];
+    if (retarding) {
+      d[i] += 0.5 * in[i] * norm2(w[i]) * (1 - k * k);
+      w[i] *= k;
+    }
+  }
+}
+
+}  // namespace kolsky::dem
