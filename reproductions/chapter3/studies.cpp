@@ -1,14 +1,12 @@
 #include "chapter3/studies.hpp"
 
-#include <gsl/gsl_errno.h>
-#include <gsl/gsl_min.h>
-
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <limits>
 
 #include "common/format.hpp"
+#include "harness/log_search.hpp"
 #include "core/errors.hpp"
 #include "scene/scene.hpp"
 
@@ -95,75 +93,31 @@ void model_levels(Context& x, const CaseResult& full, const Measures& full_m) {
 
 // ------------------------------------------------------------------ back-calculation
 
-namespace {
-
-struct Objective {
-  const std::function<double(double)>* slope_of;
-  double log_target;
-  BackCalcResult* out;
-  bool repeated = false;
-  double operator()(double log_normk) {
-    const double k = std::exp(log_normk);
-    // A run is a DEM simulation: never twice. A probe within 0.1 % of one already run (far
-    // below the bracket tolerance) ends the search with that value.
-    for (const auto& [kk, s] : out->evaluated)
-      if (std::abs(kk / k - 1) < 1e-3) {
-        repeated = true;
-        return std::isfinite(s) ? std::pow(std::log(s) - log_target, 2) : 1e30;
-      }
-    const double s = (*slope_of)(k);
-    out->evaluated[k] = s;
-    ++out->evaluations;
-    const double f = std::isfinite(s) && s > 0 ? std::pow(std::log(s) - log_target, 2) : 1e30;
-    std::printf("  back-calculation: NORMK %.5g -> slope %.1f MPa\n", k, s / 1e6);
-    if (std::isfinite(s) && (!std::isfinite(out->slope) || std::abs(std::log(s) - log_target) <
-                                                               std::abs(std::log(out->slope) - log_target))) {
-      out->slope = s;
-      out->normk = k;
-    }
-    return f;
-  }
-};
-
-double gsl_objective(double x, void* p) { return (*static_cast<Objective*>(p))(x); }
-
-}  // namespace
-
 BackCalcResult back_calculate(const std::function<double(double)>& slope_of, double target, double guess,
                               double factor, double rel_tol, int max_evaluations) {
   BackCalcResult r;
-  Objective f{&slope_of, std::log(target), &r};
+  const double log_target = std::log(target);
+  auto objective = [&](double k) {
+    const double s = slope_of(k);
+    r.evaluated[k] = s;
+    std::printf("  back-calculation: NORMK %.5g -> slope %.1f MPa\n", k, s / 1e6);
+    return std::isfinite(s) && s > 0 ? std::pow(std::log(s) - log_target, 2) : 1e30;
+  };
   const double step = std::log(factor);
-  double m = std::log(guess), a = m - step, b = m + step;
-  double fm = f(m), fa = f(a), fb = f(b);
-  // Bracketing walk: move the triple downhill by one log step until the middle is lowest.
-  while (!(fm < fa && fm < fb) && r.evaluations < max_evaluations) {
-    if (fa <= fb) b = m, fb = fm, m = a, fm = fa, a -= step, fa = f(a);
-    else a = m, fa = fm, m = b, fm = fb, b += step, fb = f(b);
-  }
-  r.bracket_lo = std::exp(a);
-  r.bracket_hi = std::exp(b);
-  if (!(fm < fa && fm < fb)) {
-    r.note = "no bracket within the evaluation cap: the best evaluated NORMK is reported";
-    return r;
-  }
-  gsl_set_error_handler_off();
-  gsl_function F{&gsl_objective, &f};
-  gsl_min_fminimizer* mz = gsl_min_fminimizer_alloc(gsl_min_fminimizer_brent);
-  gsl_min_fminimizer_set_with_values(mz, &F, m, fm, a, fa, b, fb);
-  while (r.evaluations < max_evaluations) {
-    if (gsl_min_fminimizer_iterate(mz) != GSL_SUCCESS) break;
-    const double lo = gsl_min_fminimizer_x_lower(mz), hi = gsl_min_fminimizer_x_upper(mz);
-    r.bracket_lo = std::exp(lo);
-    r.bracket_hi = std::exp(hi);
-    if (f.repeated || hi - lo < rel_tol) {  // ln-width: the bracket's relative width
-      r.converged = true;
-      if (f.repeated) r.note = "stopped where Brent probed within 0.1 % of a NORMK already run";
-      break;
-    }
-  }
-  gsl_min_fminimizer_free(mz);
-  if (!r.converged) r.note = "evaluation cap reached before the bracket reached the tolerance";
+  const double mid = std::log(guess);
+  const harness::LogSearchResult q =
+      harness::log_brent_search(objective, {mid - step, mid, mid + step, step, rel_tol, max_evaluations});
+  // Best: the slope nearest the target in ln (a failed run, NaN, never); the search's own best
+  // would take the 1e30 it is handed for a failed run.
+  for (const auto& [k, s] : r.evaluated)
+    if (std::isfinite(s) && s > 0 &&
+        (!std::isfinite(r.slope) || std::abs(std::log(s) - log_target) < std::abs(std::log(r.slope) - log_target)))
+      r.slope = s, r.normk = k;
+  r.bracket_lo = q.bracket_lo;
+  r.bracket_hi = q.bracket_hi;
+  r.evaluations = static_cast<int>(q.evaluated.size());
+  r.converged = q.converged;
+  r.note = q.note;
   return r;
 }
 

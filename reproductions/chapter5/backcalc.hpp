@@ -1,7 +1,7 @@
 // The strength back-calculation of Sec. 5.3.1 as a procedure (the text did it by hand): the
 // sigma_lim0 at which an upscaled specimen's stress-strain curve is closest, in RMS at equal
-// strain, to the reference specimen's. GSL's Brent minimiser on ln(sigma_lim0), after a
-// bracketing search; every evaluation is one DEM run, so evaluations are cached and capped.
+// strain, to the reference specimen's: the sets' shared search (harness/log_search.hpp, GSL's
+// Brent minimiser on ln sigma_lim0 after a bracketing walk; runs cached and capped).
 #pragma once
 #include <functional>
 #include <map>
