@@ -55,7 +55,6 @@
 #include <sstream>
 #include <string>
 
-#include "dem/assembly.hpp"
 #include "dem/breakage_engine.hpp"
 #include "dem/contact_hertz_mindlin.hpp"
 #include "dem/dem_system.hpp"

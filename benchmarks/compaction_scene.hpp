@@ -16,9 +16,9 @@
 #include <string>
 #include <vector>
 
-#include "dem/assembly.hpp"
 #include "dem/contact_hertz_mindlin.hpp"
 #include "dem/dem_system.hpp"
+#include "dem/spatial_sort.hpp"
 
 namespace kolsky::bench {
 

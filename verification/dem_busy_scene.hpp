@@ -7,9 +7,9 @@
 #include <cmath>
 #include <vector>
 
-#include "dem/assembly.hpp"
 #include "dem/contact_hertz_mindlin.hpp"
 #include "dem/dem_system.hpp"
+#include "dem/test_fills.hpp"
 
 namespace kolsky::dem::test {
 

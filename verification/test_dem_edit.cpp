@@ -15,7 +15,6 @@
 #include <cstring>
 
 #include "core/errors.hpp"
-#include "dem/assembly.hpp"
 #include "dem/contact_hertz_mindlin.hpp"
 #include "dem/dem_state.hpp"
 #include "dem_busy_scene.hpp"

@@ -9,7 +9,6 @@
 #include <cstring>
 
 #include "core/errors.hpp"
-#include "dem/assembly.hpp"
 #include "dem/dem_specimen.hpp"
 #include "dem/dem_state.hpp"
 #include "dem_busy_scene.hpp"

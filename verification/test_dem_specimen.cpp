@@ -8,8 +8,8 @@
 #include <random>
 
 #include "core/errors.hpp"
-#include "dem/assembly.hpp"
 #include "dem/dem_specimen.hpp"
+#include "dem/test_fills.hpp"
 
 namespace kolsky::dem {
 namespace {

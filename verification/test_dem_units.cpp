@@ -11,9 +11,10 @@
 #include <set>
 
 #include "core/errors.hpp"
-#include "dem/assembly.hpp"
 #include "dem/contact_damping.hpp"
 #include "dem/dem_system.hpp"
+#include "dem/spatial_sort.hpp"
+#include "dem/test_fills.hpp"
 
 namespace kolsky::dem {
 namespace {

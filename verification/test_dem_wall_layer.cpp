@@ -8,7 +8,7 @@
 #include <numbers>
 
 #include "core/errors.hpp"
-#include "dem/assembly.hpp"
+#include "dem/test_fills.hpp"
 #include "dem/wall_layer.hpp"
 
 namespace kolsky::dem {

@@ -280,7 +280,7 @@ TEST_F(StrainRateWalls, FaceStressesAreTheWallForcesAndAgreeInSlowLoading) {
   const auto& back = r.probe("stress_back").value;
   const auto& avg = r.probe("stress_avg").value;
   const auto& alpha = r.probe("alpha").value;
-  const shpb::SpecimenHistory h = sim.analyse(r).history;
+  const shpb::SpecimenHistory h = sim.analyze(r).history;
   for (std::size_t k = 0; k < r.t.size(); ++k) {
     EXPECT_EQ(avg[k], 0.5 * (front[k] + back[k]));
     if (std::isfinite(alpha[k]) || std::isfinite(h.alpha[k])) {

@@ -11,8 +11,9 @@
 #include <cstring>
 #include <limits>
 
-#include "dem/assembly.hpp"
 #include "dem/dem_system.hpp"
+#include "dem/spatial_sort.hpp"
+#include "dem/test_fills.hpp"
 #include "dem_busy_scene.hpp"
 
 namespace kolsky::dem {

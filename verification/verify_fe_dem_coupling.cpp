@@ -12,8 +12,8 @@
 #include <random>
 
 #include "coupling/fe_dem.hpp"
-#include "dem/assembly.hpp"
 #include "dem/dem_contacts.hpp"
+#include "dem/test_fills.hpp"
 #include "scene/scene.hpp"
 #include "shpb/assembly.hpp"
 #include "test_support.hpp"

@@ -13,6 +13,7 @@
 #include "common/driver_args.hpp"
 #include "common/report_input.hpp"
 #include "common/perturb.hpp"
+#include "core/specimen_geometry.hpp"
 #include "harness/report.hpp"
 #include "scene/scene.hpp"
 #include "shpb/simulation.hpp"
@@ -44,7 +45,7 @@ int main(int argc, char** argv) {
 
   // (a) Tables 4.1 / 5.2 from their own equations.
   const bar::BarMaterial steel{200e9, 8100, 0.33};
-  const double d = 0.0191;
+  const double d = kBarDiameter;  // Sec. 2.2
   const auto chain = bar::sphere_chain_properties(steel, d);
   m.scalar("bars.n_incident", 4.1 / d);
   m.scalar("bars.n_transmission", 2.44 / d);

@@ -104,7 +104,7 @@ CaseResult run_case(const CaseSpec& spec, const std::string& dir, const std::str
     c.arrival_time = r.arrival_time;
     c.ended_by = r.ended_by;
     if (!r.complete) throw std::runtime_error("run incomplete: " + r.failure);
-    const auto a = sim.analyse(r);
+    const auto a = sim.analyze(r);
     const auto& h = a.history;
     const double t_shift = sim.direct_analysis() ? 0.0 : r.arrival_time;
     c.t = h.t;

@@ -254,8 +254,8 @@ int cmd_run(const std::vector<std::string>& args) {
   // A run stopped by a numerical failure before the analysis has its two samples (the
   // incident wave not yet at the specimen) is written without one: its probes and failure
   // are the result, and the analysis of too short a record must not replace them.
-  const bool analysed = r.complete || sim->can_analyse(r);
-  const shpb::RunAnalysis analysis = analysed ? sim->analyse(r) : shpb::RunAnalysis{};
+  const bool analysed = r.complete || sim->can_analyze(r);
+  const shpb::RunAnalysis analysis = analysed ? sim->analyze(r) : shpb::RunAnalysis{};
   const auto summary = summarize(analysis.waves, analysis.history);
   io::RunRecord rec = to_record(sc, r, analysis.history, summary);
   if (resume) rec.meta["restarted_from"] = o.restart;

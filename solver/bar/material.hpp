@@ -5,6 +5,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "core/specimen_geometry.hpp"
+
 namespace kolsky::bar {
 
 struct BarMaterial {
@@ -20,7 +22,7 @@ struct BarMaterial {
 /// A straight cylindrical bar.
 struct BarGeometry {
   double length = 1.0;     ///< m
-  double diameter = 0.0191; ///< m
+  double diameter = kBarDiameter;  ///< m
   double area() const { return std::numbers::pi * diameter * diameter / 4.0; }
 };
 

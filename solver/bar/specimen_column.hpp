@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "core/specimen_coupling.hpp"
+#include "core/specimen_geometry.hpp"
 #include "core/table.hpp"
 
 namespace kolsky::bar {
@@ -27,8 +28,8 @@ struct TabulatedCompaction {
 using ColumnMaterial = std::variant<LinearElastic, TabulatedCompaction>;
 
 struct ColumnParams {
-  double length = 0.0093;    ///< L_s, m
-  double diameter = 0.0191;  ///< m
+  double length = kSpecimenLength;      ///< L_s, m
+  double diameter = kSpecimenDiameter;  ///< m
   double density = 1500.0;   ///< kg/m^3
   int n_elements = 100;
   ColumnMaterial material = LinearElastic{};

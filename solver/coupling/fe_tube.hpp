@@ -15,6 +15,7 @@
 #pragma once
 #include <vector>
 
+#include "core/specimen_geometry.hpp"
 #include "coupling/surface_coupling.hpp"
 #include "dem/dem_system.hpp"
 #include "fe/body.hpp"
@@ -24,8 +25,8 @@ namespace kolsky::coupling {
 
 struct FeTubeParams {
   fe::MeshedTube tube;
-  double specimen_length = 9.3e-3;   ///< L_s (m): the tube is centred on it
-  double specimen_radius = 9.55e-3;  ///< R_s (m): the tube's inner radius
+  double specimen_length = kSpecimenLength;        ///< L_s (m): the tube is centred on it
+  double specimen_radius = kSpecimenDiameter / 2;  ///< R_s (m): the tube's inner radius
   int threads = 1;
 };
 

@@ -19,8 +19,8 @@
 #include <string>
 
 #include "core/errors.hpp"
-#include "dem/assembly.hpp"
 #include "dem/dem_system.hpp"
+#include "dem/spatial_sort.hpp"
 
 namespace kolsky::dem {
 

@@ -9,6 +9,7 @@
 #include <optional>
 
 #include "core/specimen_coupling.hpp"
+#include "core/specimen_geometry.hpp"
 #include "dem/breakage_engine.hpp"
 #include "dem/dem_system.hpp"
 #include "dem/rest_relaxation.hpp"
@@ -20,8 +21,8 @@ struct DemSpecimenState;  // dem_state.hpp: checkpoint/restart state
 /// Walls of the specimen. Defaults: the Table 4.1 linear wall contact (LinearParams{}:
 /// k_n = 2.6e6 N/m, k_s = 1.6e6 N/m, friction 0.3) on both ends and the tube; a rigid tube.
 struct SpecimenWalls {
-  double length = 0.0093;   ///< L, initial distance between the end planes, m
-  double radius = 0.00955;  ///< inner radius of the confining tube, m
+  double length = kSpecimenLength;        ///< L, initial distance between the end planes, m
+  double radius = kSpecimenDiameter / 2;  ///< inner radius of the confining tube, m
   WallLaw end_law = linear_spring(LinearParams{});
   WallLaw tube_law = linear_spring(LinearParams{});
   std::optional<TubeCompliance> tube_compliance;  ///< none: rigid tube

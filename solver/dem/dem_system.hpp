@@ -48,7 +48,7 @@ struct DemOptions {
   int owner_block = 2048;
   /// After an edit (DemSystem::edit), when the grains added since the last spatial sort exceed
   /// this fraction of all grains, the system re-sorts them (Morton order of cells of the
-  /// smallest diameter, assembly.hpp) and starts fresh owner blocks: fragments appended at the
+  /// smallest diameter, spatial_sort.hpp) and starts fresh owner blocks: fragments appended at the
   /// end of the arrays lose the locality the sweep relies on (docs/dem.md, "Performance").
   /// A re-sort changes each grain's summation order (results move by round-off, not physics).
   /// 0: never. Without edits it never fires.

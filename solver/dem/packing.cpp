@@ -12,12 +12,12 @@
 
 #include "core/errors.hpp"
 #include "core/rng.hpp"
-#include "dem/assembly.hpp"
 #include "dem/contact_linear.hpp"
 #include "dem/dem_system.hpp"
 #include "dem/packing_internal.hpp"
 #include "dem/packing_walls.hpp"
 #include "dem/prestress.hpp"
+#include "dem/spatial_sort.hpp"
 #include "psd/sampling.hpp"
 
 namespace kolsky::dem {

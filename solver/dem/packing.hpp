@@ -25,6 +25,7 @@
 #include <functional>
 #include <utility>
 
+#include "core/specimen_geometry.hpp"
 #include "dem/particles.hpp"
 #include "psd/grain_size_curve.hpp"
 
@@ -53,8 +54,8 @@ inline constexpr int kJamScaledStepsPerStage = 60;
 struct PackingParams {
   psd::GrainSizeCurve curve;       ///< grain sizes of the specimen (already upscaled), m
   double porosity = 0.44;          ///< target n = 1 - V_solid / V, in (0, 1)
-  double diameter = 0.0191;        ///< cylinder diameter, m
-  double length = 0.0093;          ///< cylinder length (z from 0 to length), m
+  double diameter = kSpecimenDiameter; ///< cylinder diameter, m
+  double length = kSpecimenLength;     ///< cylinder length (z from 0 to length), m
   std::uint64_t seed = 1;
   Material material;               ///< grain material (E, nu, rho) used while packing
   int material_index = 0;          ///< material index written into the particles

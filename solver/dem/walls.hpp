@@ -11,6 +11,7 @@
 #include <variant>
 #include <vector>
 
+#include "core/specimen_geometry.hpp"
 #include "dem/contact_law.hpp"
 #include "dem/vec3.hpp"
 
@@ -71,7 +72,7 @@ struct TubeCompliance {
   double youngs_modulus = 200e9;  ///< E of the tube, Pa
   double thickness = 0.005;       ///< wall thickness t, m
   double density = 8100;          ///< kg/m^3
-  double height = 0.0093;         ///< H, length over which the specimen pressure acts, m
+  double height = kSpecimenLength; ///< H, length over which the specimen pressure acts, m
   /// Radial stiffness per unit inner-wall area p / u (Pa/m), e.g. a thick tube's Lame value
   /// (fe::lame_wall_stiffness); 0: the thin-wall E t / R^2.
   double wall_stiffness = 0;
@@ -87,7 +88,7 @@ struct TubeCompliance {
 /// z), infinitely long; particles live inside. Rigid unless `compliance` is set.
 struct CylinderWall {
   double cx = 0, cy = 0;
-  double radius = 0.00955;
+  double radius = kSpecimenDiameter / 2;
   std::optional<TubeCompliance> compliance;
   WallLaw law = linear_spring(LinearParams{});  ///< Table 4.1 wall contact
 };

@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "core/specimen_coupling.hpp"
+#include "core/specimen_geometry.hpp"
 #include "fe/body.hpp"
 #include "fe/contact.hpp"
 
@@ -42,8 +43,8 @@ using Tube = std::variant<NoTube, RigidTube, SpringTube, MeshedTube>;
 
 
 struct FeSpecimenParams {
-  double radius = 9.55e-3;  ///< R_s, m (Sec. 2.2: d = 19.1 mm)
-  double length = 9.3e-3;   ///< L_s, m (Sec. 2.2)
+  double radius = kSpecimenDiameter / 2;  ///< R_s, m (Sec. 2.2: d = 19.1 mm)
+  double length = kSpecimenLength;        ///< L_s, m (Sec. 2.2)
   int n_r = 20, n_z = 20;   ///< specimen elements (radial, axial)
   /// Specimen material; the default is the Sec. 2.3.2 elasticity (G 50 MPa, nu 0.3) without an
   /// EOS, for checks. SHPB runs pass PseudoTensorModeI with the compaction EOS.

@@ -16,6 +16,7 @@
 #include <optional>
 #include <vector>
 
+#include "core/specimen_geometry.hpp"
 #include "fe/body.hpp"
 #include "fe/fe_specimen.hpp"
 #include "fe/meshed_shpb.hpp"
@@ -26,8 +27,8 @@ struct MeshedBarsTubeParams {
   MeshedBar incident, transmission;
   int bar_n_r = 4;
   double bar_element_length = 2e-3;  ///< m
-  double specimen_length = 9.3e-3;   ///< L_s, the gap between the faces, m
-  double specimen_radius = 9.55e-3;  ///< R_s, the tube's inner radius, m
+  double specimen_length = kSpecimenLength;        ///< L_s, the gap between the faces, m
+  double specimen_radius = kSpecimenDiameter / 2;  ///< R_s, the tube's inner radius, m
   std::optional<MeshedTube> tube;    ///< none: the grains' tube is not part of the FE body
   std::function<double(double)> applied_stress;  ///< Pa at t, compression +
   int threads = 1;

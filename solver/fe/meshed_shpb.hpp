@@ -22,6 +22,7 @@
 #include <string>
 #include <vector>
 
+#include "core/specimen_geometry.hpp"
 #include "fe/fe_specimen.hpp"
 
 namespace kolsky::fe {
@@ -30,7 +31,7 @@ namespace kolsky::fe {
 struct MeshedBar {
   LinearElastic material{200e9, 0.33, 8100};  ///< Sec. 2.3.1 steel
   double length = 1.0;                        ///< m
-  double radius = 9.55e-3;                    ///< m
+  double radius = kBarDiameter / 2;           ///< m
   std::vector<double> gauges;                 ///< distances from the specimen face, m
 };
 

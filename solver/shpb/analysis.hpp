@@ -12,6 +12,8 @@
 #pragma once
 #include <vector>
 
+#include "core/specimen_geometry.hpp"
+
 namespace kolsky::shpb {
 
 /// One elastic bar as the analysis sees it.
@@ -19,7 +21,7 @@ struct AnalysisBar {
   double youngs_modulus = 200e9;  ///< E_o, Pa
   double density = 8100.0;        ///< rho_o, kg/m^3
   double poisson_ratio = 0.33;    ///< for the dispersion correction only
-  double diameter = 0.0191;       ///< m
+  double diameter = kBarDiameter; ///< m
   double gauge_distance = 0.0;    ///< gauge to specimen face, m (gauge processing only)
   double wave_speed() const;
   double area() const;
@@ -27,8 +29,8 @@ struct AnalysisBar {
 
 struct AnalysisSetup {
   AnalysisBar incident, transmission;
-  double specimen_length = 0.0093;    ///< L_s, m
-  double specimen_diameter = 0.0191;  ///< m (A_s)
+  double specimen_length = kSpecimenLength;      ///< L_s, m
+  double specimen_diameter = kSpecimenDiameter;  ///< m (A_s)
   double specimen_area() const;
 };
 

@@ -159,7 +159,7 @@ bool SimulatedShpb::direct_analysis() const {
   return std::holds_alternative<StrainRateWallsAssembly>(assembly_);
 }
 
-RunAnalysis SimulatedShpb::analyse(const RunResult& r) const {
+RunAnalysis SimulatedShpb::analyze(const RunResult& r) const {
   RunAnalysis a;
   if (direct_analysis()) {  // Sec. 5.2.1: stresses from the wall forces, strain from Eq. 5.1
     a.history = analyze_faces(r.t, r.probe("specimen_strain").value, r.probe("strain_rate").value,
@@ -168,11 +168,11 @@ RunAnalysis SimulatedShpb::analyse(const RunResult& r) const {
   }
   const AnalysisSetup setup = analysis_setup();
   a.waves = r.face_waves(setup.incident.youngs_modulus, setup.transmission.youngs_modulus);
-  a.history = analyze(a.waves, setup);
+  a.history = shpb::analyze(a.waves, setup);  // the free function, not this member
   return a;
 }
 
-bool SimulatedShpb::can_analyse(const RunResult& r) const {
+bool SimulatedShpb::can_analyze(const RunResult& r) const {
   if (direct_analysis()) return r.t.size() >= 2;
   const AnalysisSetup setup = analysis_setup();
   return r.face_waves(setup.incident.youngs_modulus, setup.transmission.youngs_modulus).t.size() >= 2;

@@ -43,7 +43,7 @@ struct ShpbState {
   double w_i = 0, w_r = 0, w_t = 0, prev[3] = {0, 0, 0}, injected = 0;
 };
 
-/// What SimulatedShpb::analyse returns: the face waves (empty for a direct analysis) and the
+/// What SimulatedShpb::analyze returns: the face waves (empty for a direct analysis) and the
 /// specimen history on their clock (t = 0 at the incident arrival; for strain-rate walls the
 /// run's own clock).
 struct RunAnalysis {
@@ -80,16 +80,16 @@ class SimulatedShpb {
   /// two probe samples after the incident wave's arrival (strain-rate walls: after t = 0).
   void require_analysable_end() const;
   /// Bars and specimen as the wave analysis sees them (the default bars for strain-rate walls,
-  /// which analyse() does not use).
+  /// which analyze() does not use).
   AnalysisSetup analysis_setup() const;
   /// A finished run's analysis: for bar assemblies, the classic analysis of the face waves
   /// (RunResult::face_waves, analyze); for strain-rate walls the direct one of the face
   /// stresses (analyze_faces; waves empty, no wave energies). std::invalid_argument from the
   /// wave analysis when fewer than 2 wave samples exist (a run stopped before the arrival).
-  RunAnalysis analyse(const RunResult& r) const;
-  /// Whether analyse(r) has the 2 samples it needs (after the arrival, for the wave analysis).
+  RunAnalysis analyze(const RunResult& r) const;
+  /// Whether analyze(r) has the 2 samples it needs (after the arrival, for the wave analysis).
   /// A run stopped by a numerical failure before that has none: its probes are still kept.
-  bool can_analyse(const RunResult& r) const;
+  bool can_analyze(const RunResult& r) const;
   /// Whether the run is analysed without waves (strain-rate walls: no bars, no gauges).
   bool direct_analysis() const;
   /// The probes run() records, in its order (the HDF5 order), with empty values.

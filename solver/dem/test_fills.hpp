@@ -1,9 +1,8 @@
-// Simple test assemblies (not the project's packing generator): a simple-cubic lattice, and
-// random sequential addition (RSA) of non-overlapping spheres with uniformly distributed radii
-// inside a box or a cylinder, largest first. Deterministic for a seed (own 53-bit uniform
-// mapping of std::mt19937_64, independent of the standard library's distributions).
-// sort_spatially() and sort_morton() order particles cell by cell so neighbours sit close in
-// memory.
+// Simple fills for tests and benchmarks (not the project's packing generator, dem/packing.hpp):
+// a simple-cubic lattice, and random sequential addition (RSA) of non-overlapping spheres with
+// uniformly distributed radii inside a box or a cylinder, largest first. Deterministic for a
+// seed (own 53-bit uniform mapping of std::mt19937_64, independent of the standard library's
+// distributions).
 #pragma once
 #include <cstdint>
 #include <vector>
@@ -32,17 +31,5 @@ Particles random_packing(int n, double r_min, double r_max, const FillRegion& re
 
 /// Random velocities with components uniform in [-speed, speed] (m/s); deterministic.
 void randomize_velocities(Particles& p, double speed, std::uint64_t seed);
-
-/// Reorders particles by the cell (z, then y, then x) of a grid of the given size (m).
-/// Throws kolsky::InputError ("dem.sort.cell") unless cell > 0 and extent / cell < 2^20.
-void sort_spatially(Particles& p, double cell);
-
-/// Reorders particles along the Morton (Z-order) curve of the cells of a grid of the given size
-/// (m): the cells of every 2 x 2 x 2, 4 x 4 x 4, ... block come consecutively, so neighbours in
-/// all three directions sit close in memory, not only those along x (docs/dem.md,
-/// "Performance"). Same errors as sort_spatially.
-void sort_morton(Particles& p, double cell);
-/// The order sort_morton applies: new index k takes old particle order[k].
-std::vector<int> morton_order(const Particles& p, double cell);
 
 }  // namespace kolsky::dem
