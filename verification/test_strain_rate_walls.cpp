@@ -210,6 +210,51 @@ TEST_F(StrainRateWalls, EndAtBackStressEndsAtTheFirstSampleReachingIt) {
   EXPECT_THROW(scene::parse_scene(j, "walls.json", dir.str()), InputError);
 }
 
+// The run's cheap hooks: progress(n, t) before the steps k, 2k, ... (not at the first), and the
+// grain-size curves at the snapshot cadence without any snapshot hook, with breakage on; the
+// hooks copy nothing and change nothing (the probes bitwise those of a run without them), and
+// the run's DEM specimen is reachable without knowing the assembly.
+TEST_F(StrainRateWalls, ProgressAndCurveHooksObserveWithoutChangingTheRun) {
+  scene::Scene sc = parse("time_s,strain_rate\n0,1200\n1e-3,1200\n", 20e-6, 1e-6);
+  const shpb::RunResult plain = shpb::SimulatedShpb(sc.spec).run();
+  ASSERT_TRUE(plain.complete) << plain.failure;
+  shpb::SimulatedShpb sim(sc.spec);
+  const long n = sim.schedule().n_steps, every = n / 4;
+  ASSERT_GT(every, 0);
+  std::vector<std::pair<long, double>> calls;
+  std::vector<double> curve_times;
+  shpb::RunControl c;
+  c.progress_every = every;
+  c.progress = [&](long step, double t) { calls.emplace_back(step, t); };
+  c.snapshot_every = every;
+  c.grain_size_curve = [&](long, double t, const psd::GrainSizeCurve&) { curve_times.push_back(t); };
+  const shpb::RunResult r = sim.run(nullptr, c);
+  ASSERT_TRUE(r.complete) << r.failure;
+  ASSERT_EQ(calls.size(), static_cast<std::size_t>((n - 1) / every));
+  for (std::size_t k = 0; k < calls.size(); ++k) {
+    EXPECT_EQ(calls[k].first, static_cast<long>(k + 1) * every);
+    EXPECT_NEAR(calls[k].second, static_cast<double>(calls[k].first) * sim.schedule().dt, 1e-18);
+  }
+  EXPECT_TRUE(curve_times.empty());  // no breakage: no curve to give
+  EXPECT_EQ(r.probe("stress_back").value, plain.probe("stress_back").value);
+  ASSERT_NE(sim.dem_specimen(), nullptr);
+  EXPECT_EQ(sim.dem_specimen(), &walls_of(sim).specimen());
+  // With breakage the curves come at the cadence, with no snapshot hook set.
+  sc.spec.specimen = [&] {
+    auto d = std::get<dem::DemSpecimenParams>(sc.spec.specimen);
+    d.breakage = dem::BreakageParams{};
+    return d;
+  }();
+  shpb::SimulatedShpb breaking(sc.spec);
+  const shpb::RunResult b = breaking.run(nullptr, c);
+  ASSERT_TRUE(b.complete) << b.failure;
+  ASSERT_GE(curve_times.size(), 3u);
+  EXPECT_EQ(curve_times[0], 0.0);
+  const double spacing = static_cast<double>(every) * breaking.schedule().dt;
+  for (std::size_t k = 1; k < curve_times.size(); ++k)
+    EXPECT_NEAR(curve_times[k] - curve_times[k - 1], spacing, 1e-9 * spacing) << k;
+}
+
 TEST_F(StrainRateWalls, FaceStressesAreTheWallForcesAndAgreeInSlowLoading) {
   // 3 % at 40 /s: the wall moves at 0.24 m/s, loading lasts 0.75 ms, ~25 transits of a
   // compression wave at a few hundred m/s through 6 mm. Frictionless walls: no axial force on

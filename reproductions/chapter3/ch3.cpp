@@ -10,19 +10,11 @@
 
 #include "core/errors.hpp"
 #include "scene/scene.hpp"
-#include "shpb/fe_dem_bars.hpp"
 #include "shpb/simulation.hpp"
 
 namespace kolsky::ch3 {
 
 namespace {
-
-const dem::DemSpecimen* dem_of(const shpb::SimulatedShpb& sim) {
-  if (const auto* fe_dem = std::get_if<shpb::FeDemBarsAssembly>(&sim.assembly())) return &fe_dem->model().dem();
-  if (std::holds_alternative<shpb::OneDimBarsAssembly>(sim.assembly()))
-    return &std::get<dem::DemSpecimen>(sim.specimen());
-  return nullptr;
-}
 
 long first_at_least(const std::vector<double>& v, double level, long from = 0) {
   for (long k = from; k < static_cast<long>(v.size()); ++k)
@@ -51,7 +43,7 @@ CaseResult run_case(const CaseSpec& spec) {
     c.run_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - run_start).count();
     c.dt = c.run.dt;
     c.steps = c.run.steps;
-    if (const dem::DemSpecimen* d = dem_of(sim)) {
+    if (const dem::DemSpecimen* d = sim.dem_specimen()) {
       const auto& p = d->system().particles();
       c.grains = p.size();
       double solid = 0;

@@ -110,7 +110,7 @@ CaseResult run_case(nlohmann::json j, const std::string& scene_path, const std::
     c.run = sim.run();
     c.dt = c.run.dt;
     c.steps = c.run.steps;
-    const auto& dem = std::get<dem::DemSpecimen>(sim.specimen());
+    const dem::DemSpecimen& dem = *sim.dem_specimen();  // a DEM scene by construction
     c.held_steps = dem.held_calls();
     c.grains = dem.system().particles().size();
     if (!c.run.complete) {

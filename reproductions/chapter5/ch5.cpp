@@ -79,7 +79,6 @@ CaseResult run_case(const CaseSpec& spec, const std::string& dir, const std::str
     const double dt = sim.schedule().dt;
     shpb::RunControl control;
     control.snapshot_every = std::max(1L, std::lround(1e-6 / dt));  // a grain-size curve per us
-    control.snapshot = [](long, double, const dem::Particles&) {};
     control.grain_size_curve = [&c](long, double t, const psd::GrainSizeCurve& g) { c.curves.push_back({t, g}); };
     // One progress line per tenth of the run: these runs take minutes to an hour.
     struct Tenths {
@@ -89,10 +88,9 @@ CaseResult run_case(const CaseSpec& spec, const std::string& dir, const std::str
     } tenths{spec.label, sc.spec.time.end_time};
     const auto t0 = std::chrono::steady_clock::now();
     Progress quiet(sc.spec.time.end_time, false);
-    control.checkpoint_every = std::max(1L, sim.schedule().n_steps / 10);
-    control.checkpoint = [&tenths, t0](const shpb::ShpbState& s) {
+    control.progress_every = std::max(1L, sim.schedule().n_steps / 10);
+    control.progress = [&tenths, t0](long, double t) {
       const double w = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-      const double t = s.partial.t.empty() ? 0 : s.partial.t.back();
       std::printf("  %s: %.0f %% (t = %.1f us, %.0f s)\n", tenths.label.c_str(),
                   100.0 * t / tenths.end, t * 1e6, w);
     };
@@ -135,9 +133,7 @@ CaseResult run_case(const CaseSpec& spec, const std::string& dir, const std::str
       for (double e : r.probe("transmission_gauge_strain").value) c.gauge_transmission.push_back(-e * e_t);
     }
     // Grain count and coordination of the specimen at the end (also without breakage).
-    const dem::DemSpecimen* d = sim.direct_analysis()
-                                    ? &std::get<shpb::StrainRateWallsAssembly>(sim.assembly()).specimen()
-                                    : &std::get<dem::DemSpecimen>(sim.specimen());
+    const dem::DemSpecimen* d = sim.dem_specimen();
     if (c.grains_final == 0) c.grains_initial = c.grains_final = d->system().particles().size();
     if (r.has_probe("coordination_number")) c.coordination_final = r.probe("coordination_number").value.back();
     c.ok = true;

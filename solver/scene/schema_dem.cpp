@@ -25,7 +25,7 @@ void add_keys(TableBuilder& s, const std::vector<LawKey<P>>& keys, const std::st
 // Breakage keys (dem_keys.hpp), each row typed by its field.
 template <class P>
 void add_breakage_keys(TableBuilder& s, const std::vector<BreakageKey<P>>& keys, const std::string& applies) {
-  const P defaults{};
+  static const P defaults{};  // static: GCC 12 misreads a local one as uninitialised through the member pointers
   for (const BreakageKey<P>& k : keys) {
     const std::string path = "specimen.breakage." + k.key;
     std::visit(

@@ -12,7 +12,7 @@ namespace kolsky::shpb {
 
 struct ShpbState;  // simulation.hpp: the loop's state after a step, for checkpoint and restart
 
-/// Both hooks are called from the loop's thread.
+/// Every hook is called from the loop's thread.
 struct RunControl {
   /// Steps between checkpoints (0: none): checkpoint(state) before the steps k, 2k, ...
   long checkpoint_every = 0;
@@ -22,9 +22,15 @@ struct RunControl {
   /// Assemblies without grains never call it.
   long snapshot_every = 0;
   std::function<void(long step, double t, const dem::Particles&)> snapshot;
-  /// At the same steps, for a specimen whose grains break: its grain-size curve then (grains
-  /// plus fines, dem::current_grain_size_curve; docs/breakage.md).
+  /// At the same steps (snapshot_every), for a specimen whose grains break: its grain-size
+  /// curve then (grains plus fines, dem::current_grain_size_curve; docs/breakage.md), with or
+  /// without a snapshot hook.
   std::function<void(long step, double t, const psd::GrainSizeCurve&)> grain_size_curve;
+  /// Steps between progress calls (0: none): progress(n, t^n) before the steps k, 2k, ... on
+  /// the planned steps' clock, like the checkpoints. For progress lines: it copies nothing,
+  /// where a checkpoint copies the whole state.
+  long progress_every = 0;
+  std::function<void(long step, double t)> progress;
   /// Continue from this state (a checkpoint of a simulation built from the same spec).
   const ShpbState* resume = nullptr;
   /// Polled before every step: once non-zero (a signal handler's flag), the run stops there

@@ -103,10 +103,17 @@ std::vector<Probe> SimulatedShpb::declared_probes() const {
   return std::visit([](const auto& a) { return empty_probes(a.probes()); }, assembly_);
 }
 
+const dem::DemSpecimen* SimulatedShpb::dem_specimen() const {
+  if (const auto* a = std::get_if<OneDimBarsAssembly>(&assembly_)) return std::get_if<dem::DemSpecimen>(&a->specimen());
+  if (const auto* w = std::get_if<StrainRateWallsAssembly>(&assembly_)) return &w->specimen();
+  if (const auto* c = std::get_if<FeDemBarsAssembly>(&assembly_)) return &c->model().dem();
+  return nullptr;
+}
+
 std::optional<FaceForces> SimulatedShpb::initial_wall_stress() const {
-  const dem::DemSpecimen* d = nullptr;
-  if (const auto* a = std::get_if<OneDimBarsAssembly>(&assembly_)) d = std::get_if<dem::DemSpecimen>(&a->specimen());
-  if (const auto* w = std::get_if<StrainRateWallsAssembly>(&assembly_)) d = &w->specimen();
+  // The FE-coupled specimen's walls are FE profiles, not planes with a seating load: none.
+  if (std::holds_alternative<FeDemBarsAssembly>(assembly_)) return std::nullopt;
+  const dem::DemSpecimen* d = dem_specimen();
   if (!d) return std::nullopt;
   const FaceForces f = d->initial_forces();
   return FaceForces{f.front / d->area(), f.back / d->area()};
@@ -230,6 +237,8 @@ RunResult SimulatedShpb::run_on(A& assembly, Progress* progress, const RunContro
     }
     if (checkpointing && n > first && s.due(n, control.checkpoint_every))
       control.checkpoint(save_state(r, n, s));
+    if (control.progress && control.progress_every > 0 && n > first && s.due(n, control.progress_every))
+      control.progress(n, t);
     if constexpr (requires { assembly.complete_to(n, t, hooks); }) {
       if (assembly.refines_dt()) {
         // Ask the limit again after a break, before this step's dt is used (time_loop::refine).

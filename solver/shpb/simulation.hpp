@@ -100,6 +100,9 @@ class SimulatedShpb {
   std::optional<FaceForces> initial_wall_stress() const;
 
   const ShpbAssembly& assembly() const { return assembly_; }
+  /// The DEM specimen, whichever assembly holds it (1-D bars, strain-rate walls, FE bars around
+  /// it); nullptr for the other specimen models. For reading its final state after a run.
+  const dem::DemSpecimen* dem_specimen() const;
   /// The 1-D assembly's specimen and bars. Meshed bars and strain-rate walls have none: these
   /// throw std::logic_error there (use assembly(), MeshedBarsAssembly::body(),
   /// StrainRateWallsAssembly::specimen()).

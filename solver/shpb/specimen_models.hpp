@@ -28,8 +28,8 @@ inline void at_forces_evaluated(const bar::SpecimenColumn&, long, double, const 
 inline void at_forces_evaluated(const fe::FeSpecimen&, long, double, const RunControl&) {}
 /// Inline: this runs every step of a DEM run, and costs two tests when no snapshot is due.
 inline void at_forces_evaluated(const dem::DemSpecimen& d, long n, double t, const RunControl& c) {
-  if (c.snapshot && c.snapshot_every > 0 && n % c.snapshot_every == 0) {
-    c.snapshot(n, t, d.system().particles());
+  if (c.snapshot_every > 0 && n % c.snapshot_every == 0) {
+    if (c.snapshot) c.snapshot(n, t, d.system().particles());
     if (c.grain_size_curve && d.breakage())
       c.grain_size_curve(n, t, dem::current_grain_size_curve(*d.breakage(), d.system().particles()));
   }
