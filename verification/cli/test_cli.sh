@@ -257,6 +257,7 @@ outputs)
   sed "s/\"gauges\": \[1.0\]/\"gauges\": [$gauges]/" s.json > many.json
   expect_exit 2 "$kolsky" run many.json; grep -q "many.json: bars.incident.gauges: at most 1000 gauges per bar" err.txt || fail "gauge limit message: $(cat err.txt)"
   scene big.json ""; sed -i 's/"end": 0.6e-3/"end": 5/' big.json
+  : >err.txt  # as below: no stale line for the wait to find
   "$kolsky" run big.json -o big.h5 >out.txt 2>err.txt & pid=$!
   for i in $(seq 100); do grep -q "warning: the probes will take about" err.txt && break; sleep 0.1; done
   kill -TERM $pid; wait $pid; rc=$?
@@ -266,6 +267,9 @@ outputs)
   # A sibling output that fails after the run (its folder removed meanwhile): the run file is
   # kept but not marked complete, names the failure, and the command exits 1.
   dem_scene d.json ""; sed -i 's/"end": 200e-6/"end": 3e-3/' d.json; mkdir sub
+  # Emptied first: the background job's own redirection may come after the first grep below,
+  # which would then read the previous run's "steps of" and remove the folder too early.
+  : >err.txt
   "$kolsky" run d.json -o d.h5 --gauges-csv sub/g.csv >out.txt 2>err.txt & pid=$!
   # Until the run has started (its packing takes seconds on a quiet machine, minutes on a loaded
   # one), however long that is: removing the folder before the start tests the pre-check instead.
