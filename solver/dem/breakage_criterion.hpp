@@ -8,8 +8,8 @@
 //
 // The members are split in a per-pair and a per-grain constant so that the pass, run at every
 // check over every contact, costs a few multiplications per contact (no root, no division).
-// Adding a criterion: a struct with the members below, its name in kBreakageCriterionNames and
-// its keys in scene/breakage_keys.cpp. SI units: Pa, m, N.
+// Adding a criterion: a struct with the functions below, its name in kBreakageCriterionNames
+// and default_criterion, and its keys in scene/dem_keys.cpp. SI units: Pa, m, N.
 #pragma once
 #include <array>
 #include <cstdint>
