@@ -32,6 +32,16 @@ struct Study {
 
 /// Sec. 5.3.1 and 5.3.4: the N pair, the variants, the back-calculation, speed against error.
 void wang_study(Study& s);
+/// What the Wang study hands its companions of the known deviations (wang_companions.cpp).
+struct WangCompanionCases {
+  CaseSpec pair_until;    ///< the pair as the set runs it (loaded until a stress, cases "load_until")
+  CaseSpec ref_nobreak;   ///< the reference N without breakage, on the variants' history
+  const CaseResult* pair_nobreak = nullptr;  ///< the variants' run without breakage
+  const CaseResult* clim8 = nullptr;         ///< the variants' base (c_lim = 8)
+  const CaseResult* clim0 = nullptr;         ///< the variants' c_lim = 0
+};
+/// Issue 31's companions: the cases file's wang.companions says what they run.
+void wang_companions(Study& s, const WangCompanionCases& c, std::string& md);
 /// Sec. 5.3.2.
 void huang_study(Study& s);
 /// Sec. 5.3.3.

@@ -222,6 +222,12 @@ void wang_study(Study& s) {
             fmt("broken parents at the end: c_lim = 0 %.0f, c_lim = 8 %.0f (> %gx); grain contacts per grain at the end %.2f "
                 "(c_lim = 8) and %.2f (c_lim = 0)", k0, kb, clim0_breaks, base.coordination_final, clim0.coordination_final));
   }
+  // The companions of the known deviations (issue 31): full scale only (cases "companions").
+  if (w.contains("companions") && ref.ok && base.ok && nobreak.ok && clim0.ok) {
+    auto ref_nobreak = with_scene_history(spec(fmt("Wang N = %g, no breakage", n_ref), n_ref, sig_ref));
+    ref_nobreak.breakage = false;
+    wang_companions(s, {spec(fmt("Wang N = %g", n_pair), n_pair, sig_pair), ref_nobreak, &nobreak, &base, &clim0}, md);
+  }
   harness::Plot vs = figure("wang_variants.png", fmt("Wang N = %g: breakage criteria at sigma_lim0 %.3g GPa (Fig. 5.8)", nv, sig_v / 1e9),
                    "strain (Eq. 5.1)", "stress (MPa)");
   for (const auto* c : {&base, &nobreak, &clim0})

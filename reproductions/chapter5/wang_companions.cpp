@@ -1,0 +1,98 @@
+// The companions of the Wang targets that are known deviations (issue 31, item 3; README
+// "The red Wang targets settled"). Each tests the cause a deviation's reason names and can fail:
+// - the counts at 72 MPa: the text's "end of simulation" lies past 72 MPa (H5), so the pair
+//   loaded on to the text's final count must show the text's B_r there;
+// - the pair apart at 1-20 MPa: the N = 1 specimen breaks earlier, so without breakage the two
+//   N must coincide there;
+// - c_lim = 0 breaking fewer parents by the end: it is much softer, so at equal stress it must
+//   break more than twice the parents of c_lim = 8.
+#include <algorithm>
+#include <cmath>
+
+#include "chapter5/studies.hpp"
+
+namespace kolsky::ch5 {
+
+namespace {
+
+double largest(const std::vector<double>& v) { return v.empty() ? NAN : *std::max_element(v.begin(), v.end()); }
+
+}  // namespace
+
+void wang_companions(Study& s, const WangCompanionCases& c, std::string& md) {
+  auto& m = *s.m;
+  const auto& w = s.cases.at("wang");
+  const auto& spec = w.at("companions");
+  md += "\n### Companions of the known deviations (issue 31; README \"The red Wang targets settled\")\n\n";
+
+  // H5: the pair loaded on (peak rate held) until the back stress passes end_count.back_stress;
+  // B_r read at the first sample with the text's final count, scaled from N = 1.5 by N^-3.
+  {
+    const auto& e = spec.at("end_count");
+    CaseSpec sp = c.pair_until;
+    sp.label = fmt("Wang N = %g, loaded on to the text's final count", sp.upscale);
+    sp.end_at_back_stress = e.at("back_stress").get<double>();
+    sp.end_time = e.at("end_time").get<double>();
+    const CaseResult r = s.run(sp);
+    const double count = e.at("count").get<double>() * std::pow(1.5 / sp.upscale, 3);
+    const char* id = "ch5.wang.relative_breakage_at_end_count";
+    const long k = r.ok ? first_at_least(r.grain_count, count) : -1;
+    if (k >= 0) {
+      const double broken = r.broken_primary[k] + r.broken_secondary[k];
+      m.scalar(id, r.relative_breakage[k]);
+      m.note(id, fmt("N = %g reaches %.0f grains (the text's %.0f at N = 1.5, x (1.5/N)^3) at back stress %.1f MPa, "
+                     "t = %.1f us, strain %.3f: growth %.3f, %.0f broken parents, B_r %.3f",
+                     sp.upscale, r.grain_count[k], e.at("count").get<double>(), r.stress_back[k] / 1e6, r.t[k] * 1e6,
+                     r.strain[k], r.grain_count[k] / r.grains_initial, broken, r.relative_breakage[k]));
+      md += fmt("- The pair loaded on: %.0f grains (growth %.3f) at back stress %.1f MPa, %.0f broken parents, B_r %.3f "
+                "(text at its end: 40,000 / 12,824 grains, about 2,090 broken parents, B_r 0.28); %.0f s.\n",
+                r.grain_count[k], r.grain_count[k] / r.grains_initial, r.stress_back[k] / 1e6, broken,
+                r.relative_breakage[k], r.wall_s);
+    } else {
+      m.note(id, r.ok ? fmt("the count %.0f was not reached (largest %.0f grains, back stress %.1f MPa)", count,
+                            largest(r.grain_count), largest(r.stress_back) / 1e6)
+                      : "run failed: " + r.failure);
+      md += "- The pair loaded on: the text's final count not reached.\n";
+    }
+  }
+
+  // Without breakage the reference N and the pair must coincide where, with it, they part.
+  {
+    const char* id = "ch5.wang.pair_coincide_low_nobreak";
+    const double lo = spec.at("nobreak_low").at(0).get<double>(), hi = spec.at("nobreak_low").at(1).get<double>();
+    CaseSpec sp = c.ref_nobreak;
+    const CaseResult r = s.run(sp);
+    if (r.ok && c.pair_nobreak->ok) {
+      const auto d = stress_difference(r.strain, r.stress_back, c.pair_nobreak->strain, c.pair_nobreak->stress_back, lo, hi);
+      const double rule = s.threshold(id, "max_rms_pa");
+      m.trend(id, d.rms <= rule,
+              fmt("without breakage, N = %g against N = %g: RMS %.2f MPa (largest %.2f) over back stress %.0f-%.0f MPa, %d "
+                  "points; <= %g MPa", r.upscale, c.pair_nobreak->upscale, d.rms / 1e6, d.max / 1e6, lo / 1e6, hi / 1e6,
+                  d.points, rule / 1e6));
+      md += fmt("- Without breakage, N = %g against N = %g over back stress %.0f-%.0f MPa: RMS %.2f MPa (with breakage the "
+                "target's pair is compared over the same window); %.0f s.\n",
+                r.upscale, c.pair_nobreak->upscale, lo / 1e6, hi / 1e6, d.rms / 1e6, r.wall_s);
+    } else {
+      m.note(id, "a run failed: " + (r.ok ? c.pair_nobreak->failure : r.failure));
+    }
+  }
+
+  // c_lim = 0 against c_lim = 8 at equal back stress: 0.9 x the smaller of their largest.
+  {
+    const char* id = "ch5.wang.clim0_breaks_more_equal_stress";
+    const CaseResult &base = *c.clim8, &clim0 = *c.clim0;
+    if (base.ok && clim0.ok) {
+      const double level = spec.at("equal_stress_fraction").get<double>() *
+                           std::min(largest(base.stress_back), largest(clim0.stress_back));
+      const double kb = broken_at_stress(base, level), k0 = broken_at_stress(clim0, level);
+      const double rule = s.threshold(id, "min_broken_ratio");
+      m.trend(id, k0 > rule * kb,
+              fmt("broken parents at back stress %.1f MPa: c_lim = 0 %.0f, c_lim = 8 %.0f (ratio %.2f; > %gx)", level / 1e6, k0,
+                  kb, k0 / kb, rule));
+      md += fmt("- At equal back stress (%.1f MPa) c_lim = 0 has broken %.0f parents, c_lim = 8 %.0f (ratio %.2f).\n",
+                level / 1e6, k0, kb, k0 / kb);
+    }
+  }
+}
+
+}  // namespace kolsky::ch5
