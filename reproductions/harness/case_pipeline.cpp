@@ -1,0 +1,206 @@
+#include "harness/case_pipeline.hpp"
+
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <numbers>
+#include <stdexcept>
+#include <variant>
+
+#include "core/build_info.hpp"
+#include "core/errors.hpp"
+#include "core/hash.hpp"
+#include "scene/scene.hpp"
+#include "shpb/simulation.hpp"
+
+namespace kolsky::harness {
+
+namespace {
+
+double seconds_since(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+/// Applies one change, following its path one part at a time: each part names a member of an
+/// object (a null on the way becomes an object, as nlohmann's operator[] makes it). A removal
+/// creates nothing: a key that is not there is already removed.
+void apply(nlohmann::json& scene, const SceneChange& ch, const std::string& file) {
+  const bool removal = ch.value.is_null();
+  nlohmann::json* at = &scene;
+  std::string rest = ch.key;
+  for (;;) {
+    const auto dot = rest.find('.');
+    const std::string part = rest.substr(0, dot);
+    if (part.empty()) throw InputError(file, ch.key, "a change's dotted key has an empty part");
+    if (!at->is_object() && !at->is_null())
+      throw InputError(file, ch.key, "a change's path goes through a " + std::string(at->type_name()) +
+                                         ", not an object");
+    if (dot == std::string::npos) {
+      if (!removal) (*at)[part] = ch.value;
+      else if (at->is_object()) at->erase(part);
+      return;
+    }
+    if (removal && !(at->is_object() && at->contains(part))) return;
+    at = &(*at)[part];
+    rest = rest.substr(dot + 1);
+  }
+}
+
+void flatten(const nlohmann::json& patch, const std::string& prefix, std::vector<SceneChange>& out) {
+  for (const auto& [k, v] : patch.items()) {
+    if (k.empty() || k.find('.') != std::string::npos)
+      throw InputError("", prefix + k, "a merge patch key that is empty or holds a '.' cannot be a change");
+    if (v.is_object() && !v.empty()) flatten(v, prefix + k + ".", out);
+    else out.push_back({prefix + k, v});
+  }
+}
+
+}  // namespace
+
+SceneChange parse_change(const std::string& item, const std::string& origin) {
+  const auto eq = item.find('=');
+  if (eq == std::string::npos) throw InputError(origin, item, "a change is written dotted.key=JSON; this has no '='");
+  SceneChange ch{item.substr(0, eq), nullptr};
+  if (ch.key.empty()) throw InputError(origin, item, "a change needs a key before '='");
+  try {
+    ch.value = nlohmann::json::parse(item.substr(eq + 1));
+  } catch (const nlohmann::json::parse_error&) {
+    throw InputError(origin, ch.key, "the value '" + item.substr(eq + 1) + "' is not JSON (a string needs its quotes)");
+  }
+  return ch;
+}
+
+std::vector<SceneChange> changes_from_patch(const nlohmann::json& patch) {
+  if (!patch.is_object()) throw InputError("", "", "a merge patch must be a JSON object");
+  std::vector<SceneChange> out;
+  flatten(patch, "", out);
+  return out;
+}
+
+Case Case::with(const std::string& key, const nlohmann::json& value, const std::string& new_label) const {
+  Case c = *this;
+  c.changes.push_back({key, value});
+  c.label = new_label;
+  return c;
+}
+
+nlohmann::json final_scene(const Case& c) {
+  nlohmann::json j = c.scene;
+  if (!c.packing_cache.empty())
+    j["specimen"]["packing_cache"] = std::filesystem::absolute(c.packing_cache).string();
+  for (const auto& ch : c.changes) apply(j, ch, c.scene_path);
+  return j;
+}
+
+std::string scene_dir(const Case& c) { return std::filesystem::path(c.scene_path).parent_path().string(); }
+
+void validate(const Case& c) { scene::parse_scene(final_scene(c), c.scene_path, scene_dir(c)); }
+
+std::string binary_version() {
+  return std::string("kolsky ") + build_info::version() + " " + build_info::git_commit();
+}
+
+std::string content_key(const Case& c) {
+  nlohmann::json j = final_scene(c);
+  if (j.contains("specimen") && j["specimen"].is_object()) j["specimen"].erase("packing_cache");
+  const std::uint64_t h = fnv1a_64(j.dump(), fnv1a_64(binary_version() + "\n"));
+  char hex[17];
+  std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(h));
+  return hex;
+}
+
+dem::CachedPacking pack(const Case& c) {
+  const auto sc = scene::parse_scene(final_scene(c), c.scene_path, scene_dir(c));
+  const auto* dp = std::get_if<dem::DemSpecimenParams>(&sc.spec.specimen);
+  if (dp == nullptr) throw InputError(c.scene_path, "specimen.model", "not a DEM specimen: there is no packing");
+  dem::PackingParams p = dp->packing;
+  p.on_progress = [label = c.label](const dem::PackingProgress& q) {
+    const std::string phase = q.phase;
+    const bool staged = phase == "growth" || phase == "compaction" || phase == "settle";
+    if (q.done % (staged ? 10 : 20) != 0 && q.done != q.most) return;
+    std::printf("%s: %s %d (of at most %d), %s %.3g", label.c_str(), q.phase, q.done, q.most,
+                phase == "growth"       ? "radius scale"
+                : phase == "compaction" ? "wall gap / length"
+                : phase == "settle"     ? "largest overlap / mean radius"
+                : phase == "relax"      ? "kinetic / initial elastic energy"
+                                        : "wall mean stress (Pa)",
+                q.value);
+    if (phase != "prestress" && std::isfinite(q.wall_stress)) std::printf(", wall mean stress %.3g Pa", q.wall_stress);
+    if (std::isfinite(q.coordination)) std::printf(", Z %.2f", q.coordination);
+    std::printf("\n");
+  };
+  return dem::cached_packing(p, dp->packing_store);
+}
+
+std::vector<double> from_arrival(const shpb::RunResult& run, const std::string& probe) {
+  const auto& v = run.probe(probe).value;
+  std::vector<double> out;
+  for (std::size_t i = 0; i < run.t.size(); ++i)
+    if (!(run.t[i] < run.arrival_time - 1e-12)) out.push_back(v[i]);
+  return out;
+}
+
+namespace {
+
+DemFinalState dem_final_state(const dem::DemSpecimen& d) {
+  DemFinalState s;
+  const auto& p = d.system().particles();
+  s.grains = p.size();
+  s.held_steps = d.held_calls();
+  double solid = 0;
+  for (double r : p.radius) solid += 4.0 / 3.0 * std::numbers::pi * r * r * r;
+  s.porosity = 1 - solid / (d.area() * d.length());
+  return s;
+}
+
+/// The run and what is read off it; throws what the solver throws.
+void build_and_run(const Case& c, const scene::Scene& sc, CaseOutputs& out) {
+  shpb::SimulatedShpb sim(sc.spec);  // a DEM specimen packs here (or reads its cache)
+  sim.require_analysable_end();
+  shpb::RunControl control;
+  if (c.grain_size_curve_every > 0) {
+    control.snapshot_every = std::max(1L, std::lround(c.grain_size_curve_every / sim.schedule().dt));
+    control.grain_size_curve = [&out](long, double t, const psd::GrainSizeCurve& g) { out.curves.push_back({t, g}); };
+  }
+  const auto run_start = std::chrono::steady_clock::now();
+  out.run = sim.run(nullptr, control);
+  out.run_s = seconds_since(run_start);
+  if (const dem::DemSpecimen* d = sim.dem_specimen()) out.dem = dem_final_state(*d);
+  if (!out.run.complete) {
+    out.failure = out.run.failure;
+    return;
+  }
+  try {  // a run too short for the wave analysis keeps its face records
+    out.history = sim.analyze(out.run).history;
+  } catch (const std::invalid_argument& e) {
+    out.analysis_failure = e.what();
+  }
+  for (std::size_t i = 0; i < out.run.t.size(); ++i)
+    if (!(out.run.t[i] < out.run.arrival_time - 1e-12)) out.faces.t.push_back(out.run.t[i] - out.run.arrival_time);
+  out.faces.front = from_arrival(out.run, "stress_front");
+  out.faces.back = from_arrival(out.run, "stress_back");
+  out.faces.strain = from_arrival(out.run, "specimen_strain");
+  out.ok = true;
+}
+
+}  // namespace
+
+CaseOutputs run_case(const Case& c) {
+  CaseOutputs out;
+  out.label = c.label;
+  const auto start = std::chrono::steady_clock::now();
+  try {
+    out.content_key = content_key(c);
+    const auto sc = scene::parse_scene(final_scene(c), c.scene_path, scene_dir(c));
+    build_and_run(c, sc, out);
+  } catch (const InputError& e) {
+    out.failure = e.what();
+    out.refusal = std::current_exception();
+  } catch (const std::exception& e) {
+    out.failure = e.what();
+  }
+  out.wall_s = seconds_since(start);
+  return out;
+}
+
+}  // namespace kolsky::harness
