@@ -44,9 +44,9 @@ CalPoint cal_point(const CaseResult& c, const Measures& m, bool reused) {
   p.reused = reused;
   p.label = c.label;
   if (c.ok) {
-    const long end = m.i_end > 0 ? m.i_end : static_cast<long>(c.h.t.size());
-    p.strain.assign(c.h.strain.begin(), c.h.strain.begin() + end);
-    p.stress.assign(c.h.stress_back.begin(), c.h.stress_back.begin() + end);
+    const long end = m.i_end > 0 ? m.i_end : static_cast<long>(c.history.t.size());
+    p.strain.assign(c.history.strain.begin(), c.history.strain.begin() + end);
+    p.stress.assign(c.history.stress_back.begin(), c.history.stress_back.begin() + end);
   }
   return p;
 }

@@ -1,41 +1,13 @@
 #include "chapter4/ch4.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
-#include <cstdio>
 #include <fstream>
 #include <stdexcept>
 
-#include "common/scene_override.hpp"
 #include "dem/wall_layer.hpp"
-#include "scene/scene.hpp"
 
 namespace kolsky::ch4 {
-
-dem::CachedPacking pack_scene(const nlohmann::json& j, const std::string& scene_path,
-                              const std::string& dir, const std::string& label) {
-  const auto sc = scene::parse_scene(j, scene_path, dir);
-  const auto& dp = std::get<dem::DemSpecimenParams>(sc.spec.specimen);
-  dem::PackingParams p = dp.packing;
-  p.on_progress = [label](const dem::PackingProgress& q) {
-    const std::string phase = q.phase;
-    const bool staged = phase == "growth" || phase == "compaction" || phase == "settle";
-    if (q.done % (staged ? 10 : 20) != 0 && q.done != q.most) return;
-    std::printf("%s: %s %d (of at most %d), %s %.3g", label.c_str(), q.phase, q.done, q.most,
-                phase == "growth"    ? "radius scale"
-                : phase == "compaction" ? "wall gap / length"
-                : phase == "settle"  ? "largest overlap / mean radius"
-                : phase == "relax"   ? "kinetic / initial elastic energy"
-                                     : "wall mean stress (Pa)",
-                q.value);
-    if (phase != "prestress" && std::isfinite(q.wall_stress))
-      std::printf(", wall mean stress %.3g Pa", q.wall_stress);
-    if (std::isfinite(q.coordination)) std::printf(", Z %.2f", q.coordination);
-    std::printf("\n");
-  };
-  return dem::cached_packing(p, dp.packing_store);
-}
 
 WallLayer wall_layer(const nlohmann::json& j, const dem::Particles& p) {
   WallLayer w;
@@ -68,7 +40,7 @@ std::vector<double> parse_list(const std::string& text) {
   return out;
 }
 
-std::string apply_scene_overrides(nlohmann::json& scene, const char* overrides) {
+std::string apply_scene_overrides(harness::Case& c, const char* overrides) {
   if (!overrides || !*overrides) return "";
   std::string note, all = overrides;
   while (!all.empty()) {
@@ -76,8 +48,7 @@ std::string apply_scene_overrides(nlohmann::json& scene, const char* overrides) 
     const std::string item = all.substr(0, semi);
     all = semi == std::string::npos ? "" : all.substr(semi + 1);
     if (item.empty()) continue;
-    if (!repro::set_scene_key(scene, item))
-      throw std::runtime_error("KOLSKY_CH4_SET: '" + item + "' has no '='");
+    c.changes.push_back(harness::parse_change(item, "KOLSKY_CH4_SET"));
     note += (note.empty() ? "" : ", ") + std::string("`") + item + "`";
   }
   return note.empty() ? "" : "**Diagnostic run: scene keys overridden by KOLSKY_CH4_SET: " + note + ".**\n\n";
@@ -96,46 +67,15 @@ double reference_value(const nlohmann::json& targets, const std::string& id) {
   throw std::runtime_error("no reference value for " + id);
 }
 
-CaseResult run_case(nlohmann::json j, const std::string& scene_path, const std::string& dir,
-                    double k, const std::string& label) {
+CaseResult run_case(const harness::Case& base, double k, const std::string& label) {
   CaseResult c;
-  c.label = label;
+  static_cast<harness::CaseOutputs&>(c) = harness::run_case(base.with("specimen.rolling_factor", k, label));
   c.rolling_factor = k;
-  const auto start = std::chrono::steady_clock::now();
-  try {
-    j["specimen"]["rolling_factor"] = k;
-    const auto sc = scene::parse_scene(j, scene_path, dir);
-    shpb::SimulatedShpb sim(sc.spec);
-    sim.require_analysable_end();
-    c.run = sim.run();
-    c.dt = c.run.dt;
-    c.steps = c.run.steps;
-    const dem::DemSpecimen& dem = *sim.dem_specimen();  // a DEM scene by construction
-    c.held_steps = dem.held_calls();
-    c.grains = dem.system().particles().size();
-    if (!c.run.complete) {
-      c.failure = c.run.failure;
-    } else {
-      const auto setup = sim.analysis_setup();
-      const auto waves =
-          c.run.face_waves(setup.incident.youngs_modulus, setup.transmission.youngs_modulus);
-      c.h = shpb::analyze(waves, setup);
-      const auto& fr = c.run.probe("stress_front").value;
-      const auto& bk = c.run.probe("stress_back").value;
-      const auto& st = c.run.probe("specimen_strain").value;
-      for (size_t i = 0; i < c.run.t.size(); ++i) {
-        if (c.run.t[i] < c.run.arrival_time - 1e-12) continue;
-        c.t_if.push_back(c.run.t[i] - c.run.arrival_time);
-        c.front_if.push_back(fr[i]);
-        c.back_if.push_back(bk[i]);
-        c.strain_if.push_back(st[i]);
-      }
-      c.ok = true;
-    }
-  } catch (const std::exception& e) {
-    c.failure = e.what();
+  if (c.ok && !c.analysis_failure.empty()) {  // no sigma_t(strain): nothing of Sec. 4.4 to measure
+    c.ok = false;
+    c.failure = c.analysis_failure;
+    c.faces = {};
   }
-  c.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return c;
 }
 
@@ -149,8 +89,8 @@ long first_at_least(const std::vector<double>& v, double level, long from = 0) {
 
 Measures measure(const CaseResult& c, double lo_stress, double mid_stress, double limit) {
   Measures m;
-  if (!c.ok || c.h.t.empty()) return m;
-  const auto& h = c.h;
+  if (!c.ok || c.history.t.empty()) return m;
+  const auto& h = c.history;
   const long n = static_cast<long>(h.t.size());
   for (double s : h.stress_back) m.max_back = std::max(m.max_back, s);
   m.i_lo = first_at_least(h.stress_back, lo_stress);
@@ -182,18 +122,18 @@ Measures measure(const CaseResult& c, double lo_stress, double mid_stress, doubl
     }
   }
   // Interface probes: the same stress window on the wall stresses.
-  const long j_lo = first_at_least(c.back_if, lo_stress);
-  long j_end = first_at_least(c.back_if, limit);
-  j_end = j_end < 0 ? static_cast<long>(c.back_if.size()) : j_end + 1;
+  const long j_lo = first_at_least(c.faces.back, lo_stress);
+  long j_end = first_at_least(c.faces.back, limit);
+  j_end = j_end < 0 ? static_cast<long>(c.faces.back.size()) : j_end + 1;
   if (j_lo >= 0 && j_end - j_lo >= 3) {
-    std::vector<double> avg(c.back_if.size());
-    for (size_t k = 0; k < avg.size(); ++k) avg[k] = 0.5 * (c.front_if[k] + c.back_if[k]);
-    m.modulus_back_if = shpb::fitted_slope(c.strain_if, c.back_if, j_lo, j_end);
-    m.modulus_avg_if = shpb::fitted_slope(c.strain_if, avg, j_lo, j_end);
+    std::vector<double> avg(c.faces.back.size());
+    for (size_t k = 0; k < avg.size(); ++k) avg[k] = 0.5 * (c.faces.front[k] + c.faces.back[k]);
+    m.modulus_back_if = shpb::fitted_slope(c.faces.strain, c.faces.back, j_lo, j_end);
+    m.modulus_avg_if = shpb::fitted_slope(c.faces.strain, avg, j_lo, j_end);
   }
-  if (!c.back_if.empty()) {
-    const long j = first_at_least(c.back_if, c.back_if.front() + 0.2e6);
-    if (j >= 0) m.back_arrival = c.t_if[j];
+  if (!c.faces.back.empty()) {
+    const long j = first_at_least(c.faces.back, c.faces.back.front() + 0.2e6);
+    if (j >= 0) m.back_arrival = c.faces.t[j];
   }
   return m;
 }

@@ -7,28 +7,19 @@
 #include <string>
 #include <vector>
 
-#include "dem/packing_cache.hpp"
-#include "shpb/analysis.hpp"
-#include "shpb/simulation.hpp"
+#include "dem/particles.hpp"
+#include "harness/case_pipeline.hpp"
 
 namespace kolsky::ch4 {
 
-struct CaseResult {
-  std::string label;
+/// One case of the set (harness/case_pipeline.hpp) at a rolling factor k. ok: the run
+/// completed and its bar-gauge analysis ran (a case without sigma_t(strain) measures nothing).
+struct CaseResult : harness::CaseOutputs {
   double rolling_factor = 1;
-  bool ok = false;
-  std::string failure;
-  shpb::RunResult run;          ///< probes (interface stresses stress_front / stress_back)
-  shpb::SpecimenHistory h;      ///< bar-gauge (face-wave) analysis, t = 0 at the arrival
-  std::vector<double> t_if, front_if, back_if, strain_if;  ///< interface probes from arrival
-  double wall_s = 0, dt = 0;
-  long steps = 0, held_steps = 0;
-  std::size_t grains = 0;
 };
 
-/// Runs the scene `j` (relative paths against `dir`) with specimen.rolling_factor = k.
-CaseResult run_case(nlohmann::json j, const std::string& scene_path, const std::string& dir,
-                    double k, const std::string& label);
+/// Runs `base` (the set's case, changed as a study needs) with specimen.rolling_factor = k.
+CaseResult run_case(const harness::Case& base, double k, const std::string& label);
 
 /// What Sec. 4.4 compares, on one case, up to the first sample with back stress >= limit.
 struct Measures {
@@ -47,12 +38,6 @@ struct Measures {
 };
 Measures measure(const CaseResult& c, double lo_stress, double mid_stress, double limit);
 
-/// The packing of scene `j` (relative paths against `dir`) through its cache, printing a
-/// progress line headed by `label` to stdout every 10 stages and every 20 pre-stress servo
-/// intervals while it packs.
-dem::CachedPacking pack_scene(const nlohmann::json& j, const std::string& scene_path,
-                              const std::string& dir, const std::string& label);
-
 /// Solid fraction of a packing in its core (at least one largest-grain diameter from every
 /// wall) and as a whole, by the lattice count of dem/wall_layer.hpp at a spacing of a third of
 /// the smallest radius (relative error ~3e-4, test_dem_wall_layer.cpp). The walls hold a looser
@@ -68,9 +53,9 @@ nlohmann::json read_json(const std::string& path);
 /// "0,0.999,1" -> {0, 0.999, 1}; "" -> {} (environment overrides of the driver's lists).
 std::vector<double> parse_list(const std::string& text);
 /// Applies "dotted.key=JSON;dotted.key=JSON" (KOLSKY_CH4_SET; null or "": nothing) to the
-/// scene and returns the report's note naming them ("" when none). Throws std::runtime_error
-/// for an item without '=' or a value that is not JSON.
-std::string apply_scene_overrides(nlohmann::json& scene, const char* overrides);
+/// case as changes and returns the report's note naming them ("" when none). Throws
+/// InputError for an item without '=' or a value that is not JSON.
+std::string apply_scene_overrides(harness::Case& c, const char* overrides);
 std::vector<double> scaled(const std::vector<double>& v, double f, long n = -1);
 /// Reference value of a target in targets.json (its "value", in the file's unit).
 double reference_value(const nlohmann::json& targets, const std::string& id);

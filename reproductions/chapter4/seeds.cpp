@@ -10,19 +10,16 @@ namespace kolsky::ch4 {
 
 using repro::fmt;
 
-std::vector<SeedCase> seed_study(const nlohmann::json& j, const std::string& scene_path,
-                                 const std::string& dir, double n, const std::vector<double>& seeds,
+std::vector<SeedCase> seed_study(const harness::Case& base, double n, const std::vector<double>& seeds,
                                  const std::vector<double>& ks, double limit) {
   std::vector<SeedCase> out;
   for (double seed : seeds) {
-    nlohmann::json js = j;
-    js["specimen"]["upscale"] = n;
-    js["specimen"]["seed"] = static_cast<long>(seed);
+    const std::string packing = "packing N = " + fmt("%g", n) + ", seed " + fmt("%g", seed);
+    const harness::Case js = base.with("specimen.upscale", n, packing).with("specimen.seed", static_cast<long>(seed), packing);
     double porosity = NAN;
     std::string failure;
     try {  // pack once (the cases then read the cache)
-      porosity = pack_scene(js, scene_path, dir, "packing N = " + fmt("%g", n) + ", seed " + fmt("%g", seed))
-                     .result.porosity;
+      porosity = harness::pack(js).result.porosity;
     } catch (const std::exception& e) {
       failure = e.what();
     }
@@ -34,13 +31,13 @@ std::vector<SeedCase> seed_study(const nlohmann::json& j, const std::string& sce
         out.push_back(s);
         continue;
       }
-      const CaseResult c = run_case(js, scene_path, dir, k, fmt("seed %g, ", seed) + fmt("k = %.8g", k));
-      s.grains = c.grains, s.case_s = c.wall_s, s.ok = c.ok, s.failure = c.failure;
+      const CaseResult c = run_case(js, k, fmt("seed %g, ", seed) + fmt("k = %.8g", k));
+      s.grains = c.dem.grains, s.case_s = c.wall_s, s.ok = c.ok, s.failure = c.failure;
       if (c.ok) {
         s.m = measure(c, 1e6, 3e6, limit);
-        const long end = s.m.i_end > 0 ? s.m.i_end : static_cast<long>(c.h.t.size());
-        s.strain.assign(c.h.strain.begin(), c.h.strain.begin() + end);
-        s.stress.assign(c.h.stress_back.begin(), c.h.stress_back.begin() + end);
+        const long end = s.m.i_end > 0 ? s.m.i_end : static_cast<long>(c.history.t.size());
+        s.strain.assign(c.history.strain.begin(), c.history.strain.begin() + end);
+        s.stress.assign(c.history.stress_back.begin(), c.history.stress_back.begin() + end);
       }
       std::printf("seeds N = %g, seed %g, k = %.8g: %s, %.1f s, M 1-10 MPa %.1f MPa\n", n, seed, k,
                   s.ok ? "ok" : s.failure.c_str(), s.case_s, s.m.modulus_back / 1e6);

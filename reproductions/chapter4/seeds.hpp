@@ -22,10 +22,9 @@ struct SeedCase {
   std::vector<double> strain, stress;  ///< sigma_t(strain) to the first 10 MPa sample, Pa
 };
 
-/// Runs every k of `ks` on the scene `j` with specimen.upscale = n and specimen.seed = each of
-/// `seeds` (packings through the scene's cache). Cases come back seed by seed, k by k.
-std::vector<SeedCase> seed_study(const nlohmann::json& j, const std::string& scene_path,
-                                 const std::string& dir, double n, const std::vector<double>& seeds,
+/// Runs every k of `ks` on the set's case `base` with specimen.upscale = n and specimen.seed =
+/// each of `seeds` (packings through its cache). Cases come back seed by seed, k by k.
+std::vector<SeedCase> seed_study(const harness::Case& base, double n, const std::vector<double>& seeds,
                                  const std::vector<double>& ks, double limit);
 
 /// M 1-10 MPa of the calibrated k relative to k = 1, seed by seed (M(k_cal) / M(1) - 1), with

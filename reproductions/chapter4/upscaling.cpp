@@ -50,42 +50,40 @@ Deviation deviation(const std::vector<double>& strain, const std::vector<double>
 
 }  // namespace
 
-std::vector<UpscalingRow> upscaling_study(const nlohmann::json& j, const std::string& scene_path,
-                                          const std::string& dir, double k,
+std::vector<UpscalingRow> upscaling_study(const harness::Case& base, double k,
                                           const CaseResult& reference, const Measures& ref_m,
                                           const std::vector<double>& ns, double lo, double limit) {
   std::vector<UpscalingRow> rows;
-  const auto& rh = reference.h;
+  const auto& rh = reference.history;
   for (double n : ns) {
     UpscalingRow row;
     row.n = n;
-    nlohmann::json jn = j;
-    jn["specimen"]["upscale"] = n;
+    const harness::Case jn = base.with("specimen.upscale", n, "packing N = " + repro::fmt("%g", n));
     try {
       const auto t0 = std::chrono::steady_clock::now();
-      const dem::CachedPacking pk = pack_scene(jn, scene_path, dir, "packing N = " + repro::fmt("%g", n));
+      const dem::CachedPacking pk = harness::pack(jn);
       row.pack_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
       row.packed_now = !pk.from_cache;
-      row.layer = wall_layer(jn, pk.result.particles);
+      row.layer = wall_layer(harness::final_scene(jn), pk.result.particles);
     } catch (const std::exception& e) {
       row.failure = e.what();
       rows.push_back(row);
       continue;
     }
-    const CaseResult c = run_case(jn, scene_path, dir, k, "N = " + repro::fmt("%g", n));
-    row.grains = c.grains;
+    const CaseResult c = run_case(jn, k, "N = " + repro::fmt("%g", n));
+    row.grains = c.dem.grains;
     row.case_s = c.wall_s;
-    row.dt = c.dt;
+    row.dt = c.run.dt;
     row.ok = c.ok;
     row.failure = c.failure;
     if (c.ok && ref_m.i_lo >= 0 && ref_m.i_end > ref_m.i_lo) {
       const Measures m = measure(c, lo, 3e6, limit);
       row.modulus = m.modulus_back;
-      if (m.i_lo >= 0) row.toe_strain = c.h.strain[m.i_lo];
-      row.i_end = m.i_end > 0 ? m.i_end : static_cast<long>(c.h.t.size());
-      row.strain = c.h.strain;
-      row.stress = c.h.stress_back;
-      const Deviation d = deviation(c.h.strain, c.h.stress_back, rh.strain, rh.stress_back,
+      if (m.i_lo >= 0) row.toe_strain = c.history.strain[m.i_lo];
+      row.i_end = m.i_end > 0 ? m.i_end : static_cast<long>(c.history.t.size());
+      row.strain = c.history.strain;
+      row.stress = c.history.stress_back;
+      const Deviation d = deviation(c.history.strain, c.history.stress_back, rh.strain, rh.stress_back,
                                     ref_m.i_lo, ref_m.i_end);
       row.rms = d.rms, row.max = d.max;
     }
@@ -115,7 +113,7 @@ FinestComparison compare_with_finest(std::vector<UpscalingRow>& rows, const Case
   auto rms_against = [&](const std::vector<double>& strain, const std::vector<double>& stress) {
     return deviation(strain, stress, f->strain, f->stress, i0, i_top + 1).rms;
   };
-  out.reference_rms = rms_against(reference.h.strain, reference.h.stress_back);
+  out.reference_rms = rms_against(reference.history.strain, reference.history.stress_back);
   const double finest_n = f->n;  // f points into rows
   for (auto& r : rows)
     if (r.ok) r.rms_finest = r.n == finest_n ? 0.0 : rms_against(r.strain, r.stress);
@@ -142,9 +140,9 @@ std::string upscaling_table(const CaseResult& reference, const Measures& ref_m,
   auto dev_cell = [&](double v) {
     return std::isfinite(v) ? " | " + fmt("%.2f MPa", v / 1e6) : std::string(" | -");
   };
-  const double ref_toe = ref_m.i_lo >= 0 ? reference.h.strain[ref_m.i_lo] : NAN;
-  t += "| " + fmt("%g", reference_n) + " (reference) | " + std::to_string(reference.grains) + " | " +
-       fmt("%.2f", reference.dt * 1e9) + " | " + fmt("%.1f", reference.wall_s) + " | - | " +
+  const double ref_toe = ref_m.i_lo >= 0 ? reference.history.strain[ref_m.i_lo] : NAN;
+  t += "| " + fmt("%g", reference_n) + " (reference) | " + std::to_string(reference.dem.grains) + " | " +
+       fmt("%.2f", reference.run.dt * 1e9) + " | " + fmt("%.1f", reference.wall_s) + " | - | " +
        fmt("%.1f MPa", ref_m.modulus_back / 1e6) + " | 0 | 0" + dev_cell(finest.reference_rms) +
        layer_cells(ref_layer, ref_toe);
   for (const auto& r : rows) {

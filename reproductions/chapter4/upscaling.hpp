@@ -29,11 +29,10 @@ struct UpscalingRow {
   std::string failure;
 };
 
-/// Runs the calibrated case at each factor in `ns` (the scene `j` with specimen.upscale = n)
-/// and compares its sigma_t(strain) with `reference` (already run, at the scene's own N)
-/// between back stresses of lo and limit on the reference curve.
-std::vector<UpscalingRow> upscaling_study(const nlohmann::json& j, const std::string& scene_path,
-                                          const std::string& dir, double k,
+/// Runs the calibrated case at each factor in `ns` (the set's case `base` with
+/// specimen.upscale = n) and compares its sigma_t(strain) with `reference` (already run, at
+/// the scene's own N) between back stresses of lo and limit on the reference curve.
+std::vector<UpscalingRow> upscaling_study(const harness::Case& base, double k,
                                           const CaseResult& reference, const Measures& ref_m,
                                           const std::vector<double>& ns, double lo, double limit);
 
