@@ -1,16 +1,10 @@
 #include "chapter3/ch3.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
+#include <exception>
 #include <fstream>
-#include <numbers>
 #include <stdexcept>
-#include <variant>
-
-#include "core/errors.hpp"
-#include "scene/scene.hpp"
-#include "shpb/simulation.hpp"
 
 namespace kolsky::ch3 {
 
@@ -30,60 +24,26 @@ nlohmann::json read_json(const std::string& path) {
   return nlohmann::json::parse(f);
 }
 
-CaseResult run_case(const CaseSpec& spec) {
+CaseResult run_case(const harness::Case& spec) {
   CaseResult c;
-  c.label = spec.label;
-  const auto start = std::chrono::steady_clock::now();
-  const auto sc = scene::parse_scene(spec.scene, spec.scene_path, spec.dir);  // InputError: exit 2
-  try {
-    shpb::SimulatedShpb sim(sc.spec);
-    sim.require_analysable_end();
-    const auto run_start = std::chrono::steady_clock::now();  // the packing (cached) is built above
-    c.run = sim.run();
-    c.run_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - run_start).count();
-    c.dt = c.run.dt;
-    c.steps = c.run.steps;
-    if (const dem::DemSpecimen* d = sim.dem_specimen()) {
-      const auto& p = d->system().particles();
-      c.grains = p.size();
-      double solid = 0;
-      for (double r : p.radius) solid += 4.0 / 3.0 * std::numbers::pi * r * r * r;
-      c.porosity = 1 - solid / (d->area() * d->length());
+  static_cast<harness::CaseOutputs&>(c) = harness::run_case(spec);
+  if (c.refusal) std::rethrow_exception(c.refusal);  // InputError: exit 2
+  if (c.run.has_probe("off_axis_fraction") && !c.run.probe("off_axis_fraction").value.empty())
+    c.off_axis = c.run.probe("off_axis_fraction").value.back();
+  if (c.ok) {
+    // Energy balance (docs/coupling.md, "Energy"): what the specimen and the bars hold against
+    // the work delivered at the incident bar's far end, on the face records' samples.
+    try {
+      const auto held = harness::from_arrival(c.run, "energy_held");
+      c.delivered_if = harness::from_arrival(c.run, "energy_delivered");
+      for (std::size_t i = 0; i < held.size(); ++i) c.energy_error_if.push_back(held[i] - c.delivered_if[i]);
+    } catch (const std::out_of_range& e) {  // a model without an energy ledger: nothing to measure
+      c.ok = false;
+      c.failure = e.what();
+      c.faces = {};
+      c.delivered_if.clear();
     }
-    if (c.run.has_probe("off_axis_fraction") && !c.run.probe("off_axis_fraction").value.empty())
-      c.off_axis = c.run.probe("off_axis_fraction").value.back();
-    if (!c.run.complete) {
-      c.failure = c.run.failure;
-    } else {
-      try {  // the gauge analysis is a cross-check: a run too short for it keeps its face records
-        const auto setup = sim.analysis_setup();
-        const auto waves = c.run.face_waves(setup.incident.youngs_modulus, setup.transmission.youngs_modulus);
-        c.h = shpb::analyze(waves, setup);
-      } catch (const std::invalid_argument&) {
-        c.h = {};
-      }
-      const auto& fr = c.run.probe("stress_front").value;
-      const auto& bk = c.run.probe("stress_back").value;
-      const auto& st = c.run.probe("specimen_strain").value;
-      const auto& held = c.run.probe("energy_held").value;
-      const auto& delivered = c.run.probe("energy_delivered").value;
-      for (std::size_t i = 0; i < c.run.t.size(); ++i) {
-        if (c.run.t[i] < c.run.arrival_time - 1e-12) continue;
-        c.energy_error_if.push_back(held[i] - delivered[i]);
-        c.delivered_if.push_back(delivered[i]);
-        c.t_if.push_back(c.run.t[i] - c.run.arrival_time);
-        c.front_if.push_back(fr[i]);
-        c.back_if.push_back(bk[i]);
-        c.strain_if.push_back(st[i]);
-      }
-      c.ok = true;
-    }
-  } catch (const InputError&) {
-    throw;
-  } catch (const std::exception& e) {
-    c.failure = e.what();
   }
-  c.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return c;
 }
 
@@ -105,45 +65,45 @@ double window_slope(const std::vector<double>& x, const std::vector<double>& y, 
 
 Measures measure(const CaseResult& c, double eps_lo, double eps_hi, double cutoff, double ringing_stress) {
   Measures m;
-  if (!c.ok || c.back_if.empty()) return m;
+  if (!c.ok || c.faces.back.empty()) return m;
   // The specimen's own record: the transmission-face stress (summed grain contact forces over
   // the area, = sigma_t of Eq. 1.2 for a 1-D bar) against the strain of the two faces'
   // displacements. Sec. 3.3: "terminated at a stress of 13 MPa".
-  const long n = static_cast<long>(c.back_if.size());
-  const long i_cut = first_at_least(c.back_if, cutoff);
+  const long n = static_cast<long>(c.faces.back.size());
+  const long i_cut = first_at_least(c.faces.back, cutoff);
   m.reached_cutoff = i_cut >= 0;
   m.i_end = m.reached_cutoff ? i_cut + 1 : n;
-  if (m.reached_cutoff) m.strain_at_cutoff = c.strain_if[i_cut], m.time_at_cutoff = c.t_if[i_cut];
+  if (m.reached_cutoff) m.strain_at_cutoff = c.faces.strain[i_cut], m.time_at_cutoff = c.faces.t[i_cut];
   // Energy balance (docs/coupling.md, "Energy") up to the cut-off: largest |held - delivered|
   // so far over the work delivered by then.
   double worst = 0;
   for (long k = 0; k < m.i_end; ++k) worst = std::max(worst, std::abs(c.energy_error_if[k]));
   m.energy_error = worst / c.delivered_if[m.i_end - 1];
-  m.slope = window_slope(c.strain_if, c.back_if, m.i_end, eps_lo, eps_hi, &m.slope_points);
+  m.slope = window_slope(c.faces.strain, c.faces.back, m.i_end, eps_lo, eps_hi, &m.slope_points);
   // Mean strain rate over the window: strain gained over the time it took.
   long a = -1, b = -1;
   for (long k = 0; k < m.i_end; ++k) {
-    if (c.strain_if[k] >= eps_lo && a < 0) a = k;
-    if (c.strain_if[k] <= eps_hi && a >= 0) b = k;
+    if (c.faces.strain[k] >= eps_lo && a < 0) a = k;
+    if (c.faces.strain[k] <= eps_hi && a >= 0) b = k;
   }
-  if (a >= 0 && b > a) m.strain_rate = (c.strain_if[b] - c.strain_if[a]) / (c.t_if[b] - c.t_if[a]);
+  if (a >= 0 && b > a) m.strain_rate = (c.faces.strain[b] - c.faces.strain[a]) / (c.faces.t[b] - c.faces.t[a]);
   // The same slope from the bar gauges by the classic analysis (Eqs. 1.1-1.2), where the
   // gauge records reach the window (the reflected wave needs d_I / c0 after the face).
-  if (!c.h.t.empty()) {
-    const long g_cut = first_at_least(c.h.stress_back, cutoff);
-    m.slope_gauges = window_slope(c.h.strain, c.h.stress_back, g_cut < 0 ? static_cast<long>(c.h.t.size()) : g_cut + 1,
+  if (!c.history.t.empty()) {
+    const long g_cut = first_at_least(c.history.stress_back, cutoff);
+    m.slope_gauges = window_slope(c.history.strain, c.history.stress_back, g_cut < 0 ? static_cast<long>(c.history.t.size()) : g_cut + 1,
                                   eps_lo, eps_hi);
   }
   // Fig. 3.4: front and back face stresses after the ringing time, taken here as the first
   // time the back face carries `ringing_stress`, up to the cut-off.
-  const long j0 = first_at_least(c.back_if, ringing_stress);
+  const long j0 = first_at_least(c.faces.back, ringing_stress);
   if (j0 >= 0 && m.i_end > j0) {
-    m.ringing_end = c.t_if[j0];
+    m.ringing_end = c.faces.t[j0];
     double gap = 0, alpha = 0;
     for (long k = j0; k < m.i_end; ++k) {
-      const double d = std::abs(c.front_if[k] - c.back_if[k]);
+      const double d = std::abs(c.faces.front[k] - c.faces.back[k]);
       gap = std::max(gap, d);
-      alpha = std::max(alpha, d / (0.5 * (c.front_if[k] + c.back_if[k])));  // Eq. 4.15's form
+      alpha = std::max(alpha, d / (0.5 * (c.faces.front[k] + c.faces.back[k])));  // Eq. 4.15's form
     }
     m.face_gap_max = gap;
     m.face_alpha_max = alpha;
@@ -153,9 +113,9 @@ Measures measure(const CaseResult& c, double eps_lo, double eps_hi, double cutof
 
 harness::Curve curve_to_cutoff(const CaseResult& c, const Measures& m) {
   harness::Curve out;
-  for (long k = 0; k < m.i_end && k < static_cast<long>(c.back_if.size()); ++k) {
-    out.x.push_back(c.strain_if[k]);
-    out.y.push_back(c.back_if[k]);
+  for (long k = 0; k < m.i_end && k < static_cast<long>(c.faces.back.size()); ++k) {
+    out.x.push_back(c.faces.strain[k]);
+    out.y.push_back(c.faces.back[k]);
   }
   return out;
 }

@@ -9,38 +9,21 @@
 #include <string>
 #include <vector>
 
+#include "harness/case_pipeline.hpp"
 #include "harness/targets.hpp"
-#include "shpb/analysis.hpp"
-#include "shpb/run_result.hpp"
 
 namespace kolsky::ch3 {
 
-/// The scene a case runs: base scene with `patch` merged in (RFC 7386), paths against `dir`.
-struct CaseSpec {
-  std::string label;
-  nlohmann::json scene;
-  std::string scene_path;  ///< for messages (the base scene file)
-  std::string dir;         ///< folder relative paths resolve against
-};
-
-struct CaseResult {
-  std::string label;
-  bool ok = false;
-  std::string failure;
-  shpb::RunResult run;
-  shpb::SpecimenHistory h;        ///< bar-gauge analysis, t = 0 at the incident arrival
-  std::vector<double> t_if, front_if, back_if, strain_if;  ///< face probes from the arrival
-  std::vector<double> energy_error_if, delivered_if;       ///< held - delivered, delivered (J)
-  double wall_s = 0, run_s = 0, dt = 0;  ///< whole case (with packing) / the time loop alone
-  long steps = 0;
-  std::size_t grains = 0;
-  double porosity = NAN;          ///< of the packing as run
+/// One case (harness/case_pipeline.hpp): the set's scene with a study's changes. The face
+/// records (faces) are the specimen's own; the energy balance is read off them too.
+struct CaseResult : harness::CaseOutputs {
+  std::vector<double> energy_error_if, delivered_if;  ///< held - delivered, delivered (J), on faces.t
   double off_axis = NAN;          ///< largest face lateral / axial contact resultant (coupled only)
 };
 
-/// Parses and runs one case; never throws for a run that fails (ok = false, failure = why),
-/// rethrows kolsky::InputError for a scene the reader refuses (the driver exits 2 with it).
-CaseResult run_case(const CaseSpec& c);
+/// Runs one case; never throws for a run that fails (ok = false, failure = why), rethrows
+/// kolsky::InputError for a scene the reader refuses (the driver exits 2 with it).
+CaseResult run_case(const harness::Case& c);
 
 /// Sec. 3.4 measurements on one case, on the face records (back-face stress from the summed
 /// contact forces, strain from the face displacements; the bar-gauge slope beside it),

@@ -8,15 +8,18 @@
 #include "common/format.hpp"
 #include "harness/log_search.hpp"
 #include "core/errors.hpp"
-#include "scene/scene.hpp"
 
 namespace kolsky::ch3 {
 
 using repro::fmt;
 
-CaseSpec make_case(const Context& x, const std::string& label, const nlohmann::json& patch) {
-  CaseSpec c{label, x.scene, x.scene_path, x.dir};
-  c.scene.merge_patch(patch);
+harness::Case make_case(const Context& x, const std::string& label, const nlohmann::json& patch) {
+  harness::Case c;
+  c.label = label;
+  c.scene_path = x.scene_path;
+  c.scene = x.scene;
+  c.changes = harness::changes_from_patch(patch);
+  c.packing_cache = x.packing_cache;
   return c;
 }
 
@@ -42,7 +45,7 @@ void model_levels(Context& x, const CaseResult& full, const Measures& full_m) {
                    "| level | run time (s, time loop only) | steps | slope 2-6 % (MPa) | slope - full (MPa) | RMS of the stress difference to the full model, 2-6 % strain (MPa) | status |\n"
                    "|---|---|---|---|---|---|---|\n";
   md += "| " + x.studies.at("levels").at("full_label").get<std::string>() + " | " + fmt("%.1f", full.run_s) + " | " +
-        std::to_string(full.steps) + " | " + mpa(full_m.slope) + " | 0 | 0 | " + (full.ok ? "ran" : "failed: " + full.failure) +
+        std::to_string(full.run.steps) + " | " + mpa(full_m.slope) + " | 0 | 0 | " + (full.ok ? "ran" : "failed: " + full.failure) +
         " |\n";
   harness::Plot lp{"model_levels.png", "Back-face stress vs strain to 13 MPa: model levels (original curve)", "strain (-)",
                    "stress (MPa)", {}, {}, {}};
@@ -55,22 +58,22 @@ void model_levels(Context& x, const CaseResult& full, const Measures& full_m) {
   add_series("full model", full, full_m);
   for (const auto& lv : x.studies.at("levels").at("reduced")) {
     const std::string id = lv.at("id"), label = lv.at("label");
-    const CaseSpec spec = make_case(x, label, lv.at("patch"));
+    const harness::Case spec = make_case(x, label, lv.at("patch"));
     try {
-      scene::parse_scene(spec.scene, spec.scene_path, spec.dir);
+      harness::validate(spec);
     } catch (const InputError& e) {
       // Not supported by the solver: reported as such, never run another way instead.
       md += "| " + label + " | - | - | - | - | - | refused by the scene reader: `" + std::string(e.what()) + "` |\n";
       x.m->trend("ch3.level." + id + ".refused", true, std::string("refused: ") + e.what());
       continue;
     }
-    const CaseResult c = run_case(spec);
+    const CaseResult c = ch3::run_case(spec);
     const Measures m = measure(x, c);
     const double d_slope = m.slope - full_m.slope;
     const double rms = curve_rms_difference(c, m, full, full_m, x.eps_lo, x.eps_hi);
     std::printf("level %s: slope %s MPa (full %s), RMS %s MPa, run %.1f s\n", id.c_str(), mpa(m.slope).c_str(),
                 mpa(full_m.slope).c_str(), mpa(rms).c_str(), c.run_s);
-    md += "| " + label + " | " + fmt("%.1f", c.run_s) + " | " + std::to_string(c.steps) + " | " + mpa(m.slope) + " | " +
+    md += "| " + label + " | " + fmt("%.1f", c.run_s) + " | " + std::to_string(c.run.steps) + " | " + mpa(m.slope) + " | " +
           mpa(d_slope) + " | " + mpa(rms) + " | " + (c.ok ? "ran" : "failed: " + c.failure) + " |\n";
     // Relative to the full model's slope; wall times stay in the table (they are not
     // reproducible numbers, so the regression gate never sees them), except for the levels
@@ -133,7 +136,7 @@ void normk_studies(Context& x, double slope_full_at_printed) {
     if (auto it = slopes.find(normk); it != slopes.end()) return it->second;
     nlohmann::json p = level_patch;
     p["specimen"]["normk"] = normk;
-    const CaseResult c = run_case(make_case(x, "NORMK " + fmt("%.5g", normk), p));
+    const CaseResult c = ch3::run_case(make_case(x, "NORMK " + fmt("%.5g", normk), p));
     const double s = measure(x, c).slope;
     slopes[normk] = s;
     return s;
@@ -165,11 +168,11 @@ void normk_studies(Context& x, double slope_full_at_printed) {
   const double e_ratio = bc.at("printed_modulus_ratio");
   nlohmann::json pp = level_patch;
   pp.merge_patch(bc.at("printed_modulus_patch"));
-  const CaseResult pc = run_case(make_case(x, "E = 70 MPa as printed", pp));
+  const CaseResult pc = ch3::run_case(make_case(x, "E = 70 MPa as printed", pp));
   const Measures pm = measure(x, pc);
   md += "\nAs printed (E = 70 MPa, NORMK 0.07, same level): " +
         (pc.ok ? "slope " + mpa(pm.slope) + " MPa, " + (pm.reached_cutoff ? "reaches" : "never reaches") +
-                     " 13 MPa (largest back-face stress " + mpa(*std::max_element(pc.h.stress_back.begin(), pc.h.stress_back.end())) + " MPa)"
+                     " 13 MPa (largest back-face stress " + mpa(*std::max_element(pc.history.stress_back.begin(), pc.history.stress_back.end())) + " MPa)"
                : "run failed: " + pc.failure) +
         ". Under that reading the back-calculation would return NORMK x " + fmt("%.0f", 1 / e_ratio) + " = " +
         fmt("%.4g", real.normk / e_ratio) + " (Eq. 3.1: K_n depends on NORMK E only).\n";
@@ -187,14 +190,14 @@ void normk_studies(Context& x, double slope_full_at_printed) {
     nlohmann::json p6 = level_patch;
     p6.merge_patch(cp.at("patch"));
     p6["specimen"]["normk"] = printed;
-    const CaseResult c6 = run_case(make_case(x, cp.at("label").get<std::string>(), p6));
+    const CaseResult c6 = ch3::run_case(make_case(x, cp.at("label").get<std::string>(), p6));
     const double s6 = measure(x, c6).slope, s3 = slope_of(printed);
     x.m->scalar("ch3.slope_n_dependence", s6 / s3);
     x.m->note("ch3.slope_n_dependence", cp.at("label").get<std::string>() + ": " + mpa(s6) + " MPa against " + mpa(s3) +
                                             " MPa at the set's N, NORMK " + fmt("%.4g", printed) + ", " +
                                             bc.at("level_label").get<std::string>());
     md += "Same level and NORMK, " + cp.at("label").get<std::string>() + ": slope " + mpa(s6) + " MPa (" +
-          std::to_string(c6.grains) + " grains) against " + mpa(s3) + " MPa.\n";
+          std::to_string(c6.dem.grains) + " grains) against " + mpa(s3) + " MPa.\n";
   }
   // The finder's path, for the plot.
   harness::Plot cp{"normk_backcalc.png", "Slope 2-6 % vs NORMK (" + bc.at("level_label").get<std::string>() + ")", "NORMK (-)",

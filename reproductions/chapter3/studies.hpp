@@ -16,8 +16,9 @@ namespace kolsky::ch3 {
 
 /// What every study needs: the scene, the studies file, the windows, where results go.
 struct Context {
-  nlohmann::json scene;          ///< the scale's base scene (as perturbed), cache set
-  std::string scene_path, dir;
+  nlohmann::json scene;          ///< the scale's base scene (as perturbed)
+  std::string scene_path;        ///< its file
+  std::string packing_cache;     ///< folder of the packing cache, next to the report
   nlohmann::json studies;        ///< studies_<scale>.json
   double eps_lo = 0.02, eps_hi = 0.06, cutoff = 13e6, ringing_stress = 2e6;
   harness::Measurements* m = nullptr;
@@ -31,8 +32,9 @@ struct Context {
 /// one fails fast; a level without such a target records no speed trend.
 std::map<std::string, double> level_speedups(const Context& x, const harness::TargetSet& targets);
 
-/// base with `patch` merged in (RFC 7386 merge patch), as a case.
-CaseSpec make_case(const Context& x, const std::string& label, const nlohmann::json& patch);
+/// base with `patch` merged in (RFC 7386 merge patch), as a case: the patch's leaves are its
+/// changes (harness::changes_from_patch).
+harness::Case make_case(const Context& x, const std::string& label, const nlohmann::json& patch);
 Measures measure(const Context& x, const CaseResult& c);
 
 /// Model levels: the full model (already run: `full`, `full_m`) against each reduced level of
