@@ -163,9 +163,9 @@ void DemSystem::remap_contacts(const std::vector<int>& old_to_new, std::size_t n
   pairs_ = std::move(list);
 
   // Wall contacts: per wall slot, sorted by (new) particle.
-  const auto n_slots = static_cast<std::size_t>(WallSlots{n_planes(), n_cylinders()}.count());
+  const auto n_slots = walls_.size();  // by slot (WallSlots)
   if (wall_first_.size() == n_slots + 1) {
-    struct Wall {
+    struct WallEntry {
       int particle;
       Vec3 history;
       ContactOut out;
@@ -178,14 +178,14 @@ void DemSystem::remap_contacts(const std::vector<int>& old_to_new, std::size_t n
     std::vector<unsigned char> active;
     std::vector<double> normal, elastic_normal;
     for (std::size_t w = 0; w < n_slots; ++w) {
-      std::vector<Wall> slot;
+      std::vector<WallEntry> slot;
       for (int c = wall_first_[w]; c < wall_first_[w + 1]; ++c) {
         const int q = old_to_new[wall_particle_[c]];
         if (q >= 0) slot.push_back({q, wall_history_[c], wall_out_.out[c], wall_out_.active[c], wall_normal_[c],
                                  wall_elastic_normal_[c]});
       }
-      std::stable_sort(slot.begin(), slot.end(), [](const Wall& x, const Wall& y) { return x.particle < y.particle; });
-      for (const Wall& c : slot) {
+      std::stable_sort(slot.begin(), slot.end(), [](const WallEntry& x, const WallEntry& y) { return x.particle < y.particle; });
+      for (const WallEntry& c : slot) {
         particle.push_back(c.particle);
         history.push_back(c.history);
         out.push_back(c.out);
@@ -220,12 +220,10 @@ bool DemSystem::added_grains_touch(std::size_t first_added) const {
     const double rsum = p_.radius[i] + p_.radius[j];
     if (norm2(p_.x[j] - p_.x[i]) < rsum * rsum) return true;
   }
-  for (std::size_t q = first_added; q < n; ++q) {
-    for (const auto& s : planes_)
-      if (dot(p_.x[q] - s.wall.point - s.offset * s.wall.normal, s.wall.normal) < p_.radius[q]) return true;
-    for (const auto& t : tubes_)
-      if (std::hypot(p_.x[q].x - t.wall.cx, p_.x[q].y - t.wall.cy) + p_.radius[q] > t.wall.radius + t.u) return true;
-  }
+  // The kernel's overlap test against every wall, with its FE profile if it has one.
+  for (std::size_t q = first_added; q < n; ++q)
+    for (const Wall& w : walls_)
+      if (-gap_at(w, p_.x[q], p_.radius[q]) > 0) return true;
   return false;
 }
 

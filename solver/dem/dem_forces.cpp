@@ -1,4 +1,4 @@
-// Contact kernels of DemSystem: grain-grain pairs, planes and cylinders, each a tight loop
+// Contact kernels of DemSystem: grain-grain pairs and walls (wall.hpp), each a tight loop
 // over a contiguous contact list with the law resolved once outside it (std::visit), writing
 // one slot per contact; then the per-particle gather in a fixed order (dem_system.hpp).
 // Geometry: n from i to j, overlap delta = r_i + r_j - |x_j - x_i|, contact point at
@@ -106,67 +106,29 @@ ContactResult wall_contact(const WallPair& pair, double overlap, const Vec3& n,
 }
 }  // namespace
 
-template <class Law>
-void DemSystem::plane_forces(const Law& law, int k, double dt) {
-  const PlaneState& s = planes_[k];
-  const Vec3 nw = s.wall.normal;
-  const Vec3 base = s.wall.point + s.offset * nw;
-  const Vec3 v_plane = s.speed * nw;
-  const bool profiled = s.profile.has_value();
-  const int slot = WallSlots{n_planes(), n_cylinders()}.slot(WallKind::plane, k);
+// The contacts of one wall with its law and shape resolved (compute_forces visits both once):
+// the gap, normal, velocity and R* of the wall at each candidate grain (wall.hpp). The
+// overlap -gap is bitwise the one the kernel has always used (wall.hpp says why).
+template <class Law, class Shape>
+void DemSystem::wall_forces(const Law& law, const Shape& shape, int slot, double dt) {
   const auto c0 = static_cast<std::ptrdiff_t>(wall_first_[slot]);
   const auto c1 = static_cast<std::ptrdiff_t>(wall_first_[slot + 1]);
   ContactStore& out = wall_out_;
 #pragma omp for schedule(dynamic, kWallChunk) nowait
   for (std::ptrdiff_t c = c0; c < c1; ++c) {
     const int i = wall_particle_[c];
-    // A profiled plane (drive_plane_profile) sits at its offset at this grain's station.
-    const double overlap = profiled ? p_.radius[i] - dot(p_.x[i] - s.wall.point, nw) + plane_offset_at(s, p_.x[i])
-                                    : p_.radius[i] - dot(p_.x[i] - base, nw);
-    if (overlap <= 0) {
-      out.active[c] = 0;
-      wall_history_[c] = Vec3{};
-      continue;
-    }
-    Vec3 torque;
-    const ContactResult r =
-        wall_contact(law.pair(p_.material[i]), overlap, -nw, profiled ? plane_velocity_at(s, p_.x[i]) : v_plane,
-                     p_.radius[i], p_.radius[i],
-                     p_.mass[i], p_.v[i], p_.omega[i], wall_history_[c], dt, torque);
-    out.out[c] = {r.force, torque, r.dissipated, r.elastic_energy};
-    wall_normal_[c] = r.normal_force;
-    wall_elastic_normal_[c] = r.elastic_normal_force;
-    out.active[c] = 1;
-  }
-}
-
-template <class Law>
-void DemSystem::tube_forces(const Law& law, int k, double dt) {
-  const TubeState& t = tubes_[k];
-  const int slot = WallSlots{n_planes(), n_cylinders()}.slot(WallKind::cylinder, k);
-  const auto c0 = static_cast<std::ptrdiff_t>(wall_first_[slot]);
-  const auto c1 = static_cast<std::ptrdiff_t>(wall_first_[slot + 1]);
-  ContactStore& out = wall_out_;
-#pragma omp for schedule(dynamic, kWallChunk) nowait
-  for (std::ptrdiff_t c = c0; c < c1; ++c) {
-    const int i = wall_particle_[c];
-    const double dx = p_.x[i].x - t.wall.cx, dy = p_.x[i].y - t.wall.cy;
-    const double rho = std::sqrt(dx * dx + dy * dy);
+    const Vec3& x = p_.x[i];
     const double r = p_.radius[i];
-    const double radius = tube_radius_at(t, p_.x[i]);  // the profile at the grain's z, if driven
-    const double overlap = r + rho - radius;
+    const double overlap = -gap_at(shape, x, r);
     if (overlap <= 0) {
       out.active[c] = 0;
       wall_history_[c] = Vec3{};
       continue;
     }
-    const Vec3 n = rho > 0 ? Vec3{dx / rho, dy / rho, 0} : Vec3{1, 0, 0};
-    // Concave contact: R* = r R / (R - r) (Hertz only; a linear spring ignores it).
-    const double r_eff = radius > r ? r * radius / (radius - r) : r;
     Vec3 torque;
     const ContactResult res =
-        wall_contact(law.pair(p_.material[i]), overlap, n, tube_velocity_at(t, p_.x[i], n), r_eff, r, p_.mass[i],
-                     p_.v[i], p_.omega[i], wall_history_[c], dt, torque);
+        wall_contact(law.pair(p_.material[i]), overlap, normal_at(shape, x), velocity_at(shape, x),
+                     contact_radius_at(shape, x, r), r, p_.mass[i], p_.v[i], p_.omega[i], wall_history_[c], dt, torque);
     out.out[c] = {res.force, torque, res.dissipated, res.elastic_energy};
     wall_normal_[c] = res.normal_force;
     wall_elastic_normal_[c] = res.elastic_normal_force;
@@ -230,28 +192,21 @@ void DemSystem::compute_forces(double dt) {
       hertz_mindlin_pair_forces(table.data(), n_mat, dt);
     else
       std::visit([&](const auto& law) { pair_forces(law, dt); }, law_);
-    for (int k = 0; k < static_cast<int>(planes_.size()); ++k)
-      std::visit([&](const auto& law) { plane_forces(law, k, dt); }, planes_[k].wall.law);
-    for (int k = 0; k < static_cast<int>(tubes_.size()); ++k)
-      std::visit([&](const auto& law) { tube_forces(law, k, dt); }, tubes_[k].wall.law);
+    // By slot: planes, then cylinders, the order of every wall sum.
+    for (int w = 0; w < static_cast<int>(walls_.size()); ++w)
+      std::visit([&](const auto& shape) {
+        std::visit([&](const auto& law) { wall_forces(law, shape, w, dt); }, shape.wall.law);
+      }, walls_[w].shape);
 #pragma omp barrier
     gather();
   }
   // Wall resultants in candidate order (deterministic), and the planes' work on the grains
   // by the trapezoid rule over the plane's displacement since the last evaluation.
-  const WallSlots slots{n_planes(), n_cylinders()};  // the one slot rule (walls.hpp)
-  for (int w = 0; w < slots.count(); ++w) {
+  for (int w = 0; w < static_cast<int>(walls_.size()); ++w) {
     double sum = 0;
     for (int c = wall_first_[w]; c < wall_first_[w + 1]; ++c)
       if (wall_out_.active[c]) sum += wall_normal_[c];
-    if (slots.kind(w) == WallKind::plane) {
-      PlaneState& s = planes_[slots.index(w)];
-      if (!s.profile) s.work += 0.5 * (s.force + sum) * (s.offset - s.offset_at_force);
-      s.offset_at_force = s.offset;
-      s.force = sum;
-    } else {
-      tubes_[slots.index(w)].force = sum;
-    }
+    record_force(walls_[w], sum);
   }
   forces_valid_ = true;
 }

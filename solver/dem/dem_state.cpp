@@ -41,9 +41,13 @@ DemState DemSystem::save_state() const {
   s.edited_energy = edited_energy_;
   s.added_since_sort = added_since_sort_;
   static_cast<ContactHistory&>(s) = contact_history();
-  for (const auto& p : planes_)
-    s.planes.push_back({p.offset, p.speed, p.force, p.offset_at_force, p.work});
-  for (const auto& t : tubes_) s.tubes.push_back({t.u, t.u_dot, t.force});
+  // The checkpoint keeps its two wall records (the layout io/ writes): walls by slot.
+  for (const Wall& w : walls_) {
+    if (const auto* p = std::get_if<Plane>(&w.shape))
+      s.planes.push_back({p->offset, p->speed, w.force, p->offset_at_force, p->work});
+    else if (const auto* c = std::get_if<Cylinder>(&w.shape))
+      s.tubes.push_back({c->u, c->u_dot, w.force});
+  }
   return s;
 }
 
@@ -51,7 +55,8 @@ void DemSystem::restore_state(const DemState& s) {
   // The particle count may differ from the system's: edits (breakage) change it.
   const std::size_t n = s.particles.size();
   if (n == 0) bad_state("the state has no particles");
-  if (s.planes.size() != planes_.size() || s.tubes.size() != tubes_.size())
+  if (s.planes.size() != static_cast<std::size_t>(n_planes()) ||
+      s.tubes.size() != static_cast<std::size_t>(n_cylinders()))
     bad_state("the state has other walls than the system");
   if (s.dissipated.size() != n) bad_state("dissipated energy: one value per particle needed");
   validate(s.particles, materials_.size());
@@ -77,19 +82,21 @@ void DemSystem::restore_state(const DemState& s) {
   particles_changed_ = false;
   skin_ = opt_.skin_over_min_radius * *std::min_element(p_.radius.begin(), p_.radius.end());
   stable_dt_ = compute_stable_dt();
-  for (std::size_t k = 0; k < planes_.size(); ++k) {
-    const DemState::Plane& q = s.planes[k];
-    PlaneState& p = planes_[k];
-    p.offset = q.offset;
-    p.speed = q.speed;
-    p.force = q.force;
-    p.offset_at_force = q.offset_at_force;
-    p.work = q.work;
-  }
-  for (std::size_t k = 0; k < tubes_.size(); ++k) {
-    tubes_[k].u = s.tubes[k].u;
-    tubes_[k].u_dot = s.tubes[k].u_dot;
-    tubes_[k].force = s.tubes[k].force;
+  std::size_t next_plane = 0, next_tube = 0;
+  for (Wall& w : walls_) {
+    if (auto* p = std::get_if<Plane>(&w.shape)) {
+      const DemState::Plane& q = s.planes[next_plane++];
+      p->offset = q.offset;
+      p->speed = q.speed;
+      w.force = q.force;
+      p->offset_at_force = q.offset_at_force;
+      p->work = q.work;
+    } else if (auto* c = std::get_if<Cylinder>(&w.shape)) {
+      const DemState::Tube& q = s.tubes[next_tube++];
+      c->u = q.u;
+      c->u_dot = q.u_dot;
+      w.force = q.force;
+    }
   }
 
   attach_contact_history(s);
@@ -105,7 +112,7 @@ ContactHistory DemSystem::contact_history() const {
       h.pair_history.push_back(pairs_.history[k]);
     }
   }
-  const auto n_slots = static_cast<std::size_t>(WallSlots{n_planes(), n_cylinders()}.count());
+  const auto n_slots = walls_.size();
   if (wall_first_.size() == n_slots + 1) {
     for (std::size_t w = 0; w < n_slots; ++w)
       for (int c = wall_first_[w]; c < wall_first_[w + 1]; ++c) {
@@ -128,7 +135,7 @@ void DemSystem::check_contact_history(const ContactHistory& s, std::size_t n) co
     if (!(i >= 0 && i < j && j < static_cast<int>(n) && ordered))
       bad_state("pair histories must be sorted pairs i < j of existing particles");
   }
-  const auto n_slots = static_cast<std::size_t>(WallSlots{n_planes(), n_cylinders()}.count());
+  const auto n_slots = walls_.size();
   const std::size_t n_wall = s.wall_slot.size();
   if (s.wall_particle.size() != n_wall || s.wall_history.size() != n_wall)
     bad_state("wall histories: slot, particle and history differ in length");
@@ -143,7 +150,7 @@ void DemSystem::check_contact_history(const ContactHistory& s, std::size_t n) co
 
 void DemSystem::attach_contact_history(const ContactHistory& s) {
   const std::size_t n = p_.size();
-  const auto n_slots = static_cast<std::size_t>(WallSlots{n_planes(), n_cylinders()}.count());
+  const auto n_slots = walls_.size();
   // The histories become the "previous" lists of the next rebuild, which carries them by key.
   PairList old;
   old.first.assign(n + 1, 0);

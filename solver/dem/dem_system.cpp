@@ -9,6 +9,7 @@
 #include <numbers>
 #include <limits>
 #include <sstream>
+#include <stdexcept>
 
 #include <omp.h>
 
@@ -69,37 +70,44 @@ void DemSystem::reset_owner_blocks() {
   block_first_.push_back(n);
 }
 
+// A new plane goes in at the end of the planes, before the cylinders (the slot rule); the
+// slots change, so the wall histories restart.
 int DemSystem::add_plane(const PlaneWall& w) {
-  validate(w, "dem.walls.plane");
-  planes_.push_back(PlaneState{w});
-  wall_particle_.clear();  // slots change: wall histories restart
-  wall_first_.clear();
-  list_valid_ = forces_valid_ = false;
-  stable_dt_ = compute_stable_dt();
-  return static_cast<int>(planes_.size()) - 1;
-}
-
-int DemSystem::add_cylinder(const CylinderWall& w) {
-  validate(w, "dem.walls.cylinder");
-  TubeState t{w};
-  if (w.compliance) {
-    t.stiffness = w.compliance->radial_stiffness(w.radius);
-    t.mass = w.compliance->radial_mass(w.radius);
-  }
-  tubes_.push_back(t);
+  walls_.insert(walls_.begin() + n_planes_, make_wall(w));
+  ++n_planes_;
   wall_particle_.clear();
   wall_first_.clear();
   list_valid_ = forces_valid_ = false;
   stable_dt_ = compute_stable_dt();
-  return static_cast<int>(tubes_.size()) - 1;
+  return n_planes_ - 1;
+}
+
+int DemSystem::add_cylinder(const CylinderWall& w) {
+  walls_.push_back(make_wall(w));
+  wall_particle_.clear();
+  wall_first_.clear();
+  list_valid_ = forces_valid_ = false;
+  stable_dt_ = compute_stable_dt();
+  return n_cylinders() - 1;
+}
+
+// The wall of a kind and index; std::out_of_range for an index its kind does not have.
+Wall& DemSystem::wall_of(WallKind kind, int k) {
+  const int n_kind = kind == WallKind::plane ? n_planes() : n_cylinders();
+  if (k < 0 || k >= n_kind) throw std::out_of_range("DemSystem: no such wall");
+  return walls_[wall_slots().slot(kind, k)];
 }
 
 void DemSystem::drive_plane(int plane, double offset, double speed) {
-  PlaneState& s = planes_.at(plane);
-  if (!std::holds_alternative<DrivenPlane>(s.wall.motion))
-    throw InputError("", "dem.walls.plane", "drive_plane needs a DrivenPlane");
-  s.offset = offset;
-  s.speed = speed;
+  drive(std::get<Plane>(wall_of(WallKind::plane, plane).shape), offset, speed);
+}
+
+void DemSystem::drive_plane_profile(int plane, WallProfile profile) {
+  drive_profile(std::get<Plane>(wall_of(WallKind::plane, plane).shape), std::move(profile));
+}
+
+void DemSystem::drive_cylinder(int cylinder, WallProfile profile) {
+  drive_profile(std::get<Cylinder>(wall_of(WallKind::cylinder, cylinder).shape), std::move(profile));
 }
 
 Particles& DemSystem::mutable_particles() {
@@ -145,11 +153,7 @@ double DemSystem::compute_stable_dt() const {
     return std::visit([&](const auto& law) { return law.stable_dt(limits); }, family);
   };
   double limit = limit_of(law_);
-  for (const auto& s : planes_) limit = std::min(limit, limit_of(s.wall.law));
-  for (const auto& t : tubes_) {
-    limit = std::min(limit, limit_of(t.wall.law));
-    if (t.mass > 0) limit = std::min(limit, std::sqrt(t.mass / t.stiffness));
-  }
+  for (const Wall& w : walls_) limit = std::min(limit, wall_stable_dt(w, limits));
   return limit;
 }
 
@@ -227,40 +231,27 @@ void DemSystem::finish_step() {
   step_threads_ = 0;
 }
 
-// The grains by the integrator (integrator.hpp), then the walls: tubes' half kick, planes and
-// tubes drift.
+// The grains by the integrator (integrator.hpp), then the walls: a compliant ring's half
+// kick, then each wall's drift (wall.hpp; the walls do not interact, so one pass does both).
 void DemSystem::kick_drift(double h, double dt) {
   max_disp2_ = dem::kick_drift(p_, h, dt, list_valid_ ? x_at_build_.data() : nullptr, max_disp2_);
-  kick_tubes(h);
-  for (auto& s : planes_) {
-    if (const auto* pr = std::get_if<PrescribedPlane>(&s.wall.motion)) {
-      s.offset += pr->velocity.displacement(time_, time_ + dt);
-      s.speed = pr->velocity.at(time_ + dt);
-    }
+  for (Wall& w : walls_) {
+    kick(w, h);
+    drift(w, time_, dt);
   }
-  for (auto& tb : tubes_) tb.u += dt * tb.u_dot;
 }
 
-// Second half kick and the rotational retardation (Eqs. 4.12-4.14) of the grains, then the tubes.
+// Second half kick and the rotational retardation (Eqs. 4.12-4.14) of the grains, then the rings.
 void DemSystem::kick_retard(double h, double dt) {
   dem::kick_retard(p_, h, opt_.rolling.factor(dt), dissipated_);
-  kick_tubes(h);
-}
-
-void DemSystem::kick_tubes(double h) {
-  for (auto& tb : tubes_)
-    if (tb.mass > 0) tb.u_dot += h * (tb.force - tb.stiffness * tb.u) / tb.mass;
+  for (Wall& w : walls_) kick(w, h);
 }
 
 bool DemSystem::needs_rebuild() const {
   if (!list_valid_) return true;
   const double half = 0.5 * skin_;
   if (max_disp2_ > half * half) return true;
-  for (const auto& s : planes_)
-    if (std::abs(s.offset - s.offset_at_build) + profile_shift(s.profile, s.profile_at_build) > half) return true;
-  for (const auto& t : tubes_)
-    if (std::abs(t.u - t.u_at_build) + profile_shift(t.profile, t.profile_at_build) > half) return true;
-  return false;
+  return std::any_of(walls_.begin(), walls_.end(), [half](const Wall& w) { return moved_since_build(w) > half; });
 }
 
 void DemSystem::rebuild() {
@@ -298,41 +289,22 @@ void DemSystem::rebuild() {
     wall_entry_[fill[wall_particle_[c]]++] = static_cast<int>(c);
   x_at_build_ = p_.x;
   max_disp2_ = 0;
-  for (auto& s : planes_) {
-    s.offset_at_build = s.offset;
-    if (s.profile) s.profile_at_build = *s.profile;
-  }
-  for (auto& t : tubes_) {
-    t.u_at_build = t.u;
-    if (t.profile) t.profile_at_build = *t.profile;
-  }
+  for (Wall& w : walls_) mark_built(w);
   list_valid_ = true;
   ++n_rebuilds_;
 }
 
 void DemSystem::build_wall_candidates() {
-  const WallSlots slots{n_planes(), n_cylinders()};  // the one slot rule (walls.hpp)
-  const auto n_slots = static_cast<std::size_t>(slots.count());
+  const auto n_slots = walls_.size();  // by slot (walls.hpp, WallSlots)
   std::vector<int> particle, first(n_slots + 1, 0);
   std::vector<Vec3> history;
   const bool carry = wall_first_.size() == n_slots + 1;
   for (std::size_t w = 0; w < n_slots; ++w) {
     std::size_t a = carry ? wall_first_[w] : 0;
     const std::size_t a_end = carry ? wall_first_[w + 1] : 0;
-    const int slot = static_cast<int>(w), k = slots.index(slot);
-    const bool plane = slots.kind(slot) == WallKind::plane;
     for (std::size_t i = 0; i < p_.size(); ++i) {
-      const Vec3& x = p_.x[i];
-      double gap;
-      if (plane) {
-        const auto& s = planes_[k];
-        gap = dot(x - s.wall.point - plane_offset_at(s, x) * s.wall.normal, s.wall.normal) - p_.radius[i];
-      } else {
-        const auto& t = tubes_[k];
-        const double rho = std::hypot(x.x - t.wall.cx, x.y - t.wall.cy);
-        gap = tube_radius_at(t, x) - rho - p_.radius[i];
-      }
-      if (gap >= skin_) continue;
+      // The candidates' round-off need not be the kernel's: only touching contacts give forces.
+      if (gap_at(walls_[w], p_.x[i], p_.radius[i]) >= skin_) continue;
       particle.push_back(static_cast<int>(i));
       Vec3 h{};
       while (a < a_end && wall_particle_[a] < static_cast<int>(i)) ++a;
@@ -355,14 +327,17 @@ DemEnergy DemSystem::energy() const {
   for (double u : pair_out_.elastic) e.elastic += u;  // pair order; zero where not touching
   for (std::size_t c = 0; c < wall_particle_.size(); ++c)
     if (wall_out_.active[c]) e.elastic += wall_out_.out[c].elastic;
-  for (const auto& t : tubes_) {
-    e.kinetic += 0.5 * t.mass * t.u_dot * t.u_dot;
-    e.elastic += 0.5 * t.stiffness * t.u * t.u;
+  // A ring's energies and a plane's work; the zeros the other shapes add change no sum (a
+  // sum of these terms is never -0).
+  for (const Wall& w : walls_) {
+    const WallEnergy we = energy_of(w);
+    e.kinetic += we.kinetic;
+    e.elastic += we.elastic;
+    e.wall_work += we.work;
   }
   for (double d : dissipated_) e.dissipated += d;
   e.dissipated += removed_dissipated_;
   e.edited = edited_energy_;
-  for (const auto& s : planes_) e.wall_work += s.work;
   return e;
 }
 
@@ -376,11 +351,7 @@ std::size_t DemSystem::n_wall_contacts() const {
 
 bool DemSystem::finite() const {
   if (!p_.finite()) return false;
-  for (const auto& t : tubes_)
-    if (!std::isfinite(t.u) || !std::isfinite(t.u_dot)) return false;
-  for (const auto& s : planes_)
-    if (!std::isfinite(s.offset) || !std::isfinite(s.force)) return false;
-  return true;
+  return std::all_of(walls_.begin(), walls_.end(), [](const Wall& w) { return is_finite(w); });
 }
 
 }  // namespace kolsky::dem

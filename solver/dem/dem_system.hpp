@@ -1,7 +1,8 @@
-// A DEM assembly: particles (struct of arrays), one grain-grain contact law, plane and cylinder
-// walls, a Verlet pair list, and the explicit integrator: velocity Verlet (kick-drift-kick;
-// dashpots see mid-step velocities, as in LIGGGHTS), then rotational retardation w <- k w,
-// Eqs. 4.12-4.14, with k_run = k_ref^(dt/dt_ref) (0.99999975 per 1 ns, Sec. 4.3). Each contact
+// A DEM assembly: particles (struct of arrays), one grain-grain contact law, walls (wall.hpp:
+// planes and cylinders, one concept), a Verlet pair list, and the explicit integrator: velocity
+// Verlet (kick-drift-kick; dashpots see mid-step velocities, as in LIGGGHTS), then rotational
+// retardation w <- k w, Eqs. 4.12-4.14, with k_run = k_ref^(dt/dt_ref) (0.99999975 per 1 ns,
+// Sec. 4.3). Each contact
 // is computed once and gathered per particle in a fixed order, so results are bitwise the same
 // for any OpenMP thread count. Stable dt = safety x min(Rayleigh step of the smallest grain,
 // sqrt(m/k) of the stiffest linear contact, tube ring mode). Details: docs/dem.md.
@@ -16,6 +17,7 @@
 #include "dem/neighbour_list.hpp"
 #include "dem/particles.hpp"
 #include "dem/thread_governor.hpp"
+#include "dem/wall.hpp"
 #include "dem/walls.hpp"
 
 namespace kolsky::dem {
@@ -179,22 +181,26 @@ class DemSystem {
   void stop_grains() {
     std::fill(p_.v.begin(), p_.v.end(), Vec3{});
     std::fill(p_.omega.begin(), p_.omega.end(), Vec3{});
-    for (TubeState& t : tubes_) t.u_dot = 0;
+    for (Wall& w : walls_) stop(w);
   }
   const std::vector<Material>& materials() const { return materials_; }
   double time() const { return time_; }
 
-  int n_planes() const { return static_cast<int>(planes_.size()); }
-  int n_cylinders() const { return static_cast<int>(tubes_.size()); }
-  const PlaneWall& plane(int k) const { return planes_[k].wall; }
-  double plane_offset(int k) const { return planes_[k].offset; }
-  double plane_speed(int k) const { return planes_[k].speed; }
+  /// Every wall, in slot order (WallSlots: planes first, then cylinders); wall.hpp asks each
+  /// its gap, normal and velocity at a point.
+  const std::vector<Wall>& walls() const { return walls_; }
+  WallSlots wall_slots() const { return {n_planes_, static_cast<int>(walls_.size()) - n_planes_}; }
+  int n_planes() const { return n_planes_; }
+  int n_cylinders() const { return static_cast<int>(walls_.size()) - n_planes_; }
+  const PlaneWall& plane(int k) const { return plane_at(k).wall; }
+  double plane_offset(int k) const { return plane_at(k).offset; }
+  double plane_speed(int k) const { return plane_at(k).speed; }
   /// Total normal contact force between plane k and the particles (compression +, N).
-  double plane_force(int k) const { return planes_[k].force; }
-  const CylinderWall& cylinder(int k) const { return tubes_[k].wall; }
+  double plane_force(int k) const { return walls_[wall_slots().slot(WallKind::plane, k)].force; }
+  const CylinderWall& cylinder(int k) const { return cylinder_at(k).wall; }
   /// Total outward radial contact force on cylinder k (N) and its radial displacement (m).
-  double cylinder_force(int k) const { return tubes_[k].force; }
-  double cylinder_displacement(int k) const { return tubes_[k].u; }
+  double cylinder_force(int k) const { return walls_[wall_slots().slot(WallKind::cylinder, k)].force; }
+  double cylinder_displacement(int k) const { return cylinder_at(k).u; }
 
   DemEnergy energy() const;
   /// Every touching contact of the last force evaluation, pairs first (in pair order), then
@@ -204,7 +210,7 @@ class DemSystem {
   /// order) and wall(i, slot, unit normal towards the wall, overlap, elastic normal force: the
   /// wall law's spring without its dashpot, as a grain pair's Hertz force; slot by the
   /// WallSlots rule).
-  template <class Pair, class Wall> void for_each_touching_contact(Pair&& pair, Wall&& wall) const;
+  template <class Pair, class OnWall> void for_each_touching_contact(Pair&& pair, OnWall&& wall) const;
   std::size_t n_pairs() const { return pairs_.size(); }
   std::size_t n_contacts() const;       ///< touching grain pairs
   std::size_t n_wall_contacts() const;  ///< touching grain-wall contacts
@@ -237,28 +243,11 @@ class DemSystem {
   // the threads' sweeps, large enough that taking a chunk (one atomic) costs nothing.
   static constexpr int kWallChunk = 256;
 
-  struct PlaneState {
-    PlaneWall wall;
-    double offset = 0, speed = 0, offset_at_build = 0;
-    double force = 0, offset_at_force = 0, work = 0;
-    std::optional<WallProfile> profile;  // drive_plane_profile
-    WallProfile profile_at_build;        // the profile at the last list rebuild
-  };
-  struct TubeState {
-    CylinderWall wall;
-    double u = 0, u_dot = 0, u_at_build = 0, force = 0, stiffness = 0, mass = 0;
-    std::optional<WallProfile> profile;  // drive_cylinder
-    WallProfile profile_at_build;
-  };
-  // The surface a grain at x meets: the plane's offset along its normal (profile or scalar),
-  // and the cylinder's radius; with the wall velocity there (the shared geometry of the force
-  // kernels, the candidate lists and for_each_touching_contact).
-  static double plane_offset_at(const PlaneState& s, const Vec3& x);
-  static double tube_radius_at(const TubeState& t, const Vec3& x);
-  static Vec3 plane_velocity_at(const PlaneState& s, const Vec3& x);
-  static Vec3 tube_velocity_at(const TubeState& t, const Vec3& x, const Vec3& n);
-  // How far a profile moved since the list was built (m): a bound on the surface's shift.
-  static double profile_shift(const std::optional<WallProfile>& now, const WallProfile& at_build);
+  Wall& wall_of(WallKind kind, int k);  // drive_*: checked
+  const Plane& plane_at(int k) const { return std::get<Plane>(walls_[wall_slots().slot(WallKind::plane, k)].shape); }
+  const Cylinder& cylinder_at(int k) const {
+    return std::get<Cylinder>(walls_[wall_slots().slot(WallKind::cylinder, k)].shape);
+  }
   // Per-contact outputs. ContactOut is what the gathering particle receives (for a pair: the
   // partner j, since i sums its own side while computing; for a wall: the grain), and the
   // contact's stored energy: one 64-byte cache line per contact, so that the scattered store
@@ -323,12 +312,11 @@ class DemSystem {
   template <class Law> void pair_forces(const Law& law, double dt);
   // dem_forces_batched.cpp; `table`: hertz_mindlin_table() of the law.
   void hertz_mindlin_pair_forces(const HertzMindlinConstants* table, int n_mat, double dt);
-  template <class Law> void plane_forces(const Law& law, int k, double dt);
-  template <class Law> void tube_forces(const Law& law, int k, double dt);
+  // The contacts of wall `slot` (its shape resolved once, outside the loop; dem_forces.cpp).
+  template <class Law, class Shape> void wall_forces(const Law& law, const Shape& shape, int slot, double dt);
   void gather();
   void kick_drift(double half_dt, double dt);   // begin_step: half kick, then drift
   void kick_retard(double half_dt, double dt);  // finish_step: half kick, then retardation
-  void kick_tubes(double half_dt);              // the compliant tubes' half kick
   int threads_for_step();                       // the governor's count (or the caller's)
   void check_contact_history(const ContactHistory& h, std::size_t n_particles) const;
   void attach_contact_history(const ContactHistory& h);  // the carry of restore / seed
@@ -359,8 +347,10 @@ class DemSystem {
   int step_threads_ = 0;  // the count begin_step chose for this step (0: the caller's)
   double max_disp2_ = 0;
 
-  std::vector<PlaneState> planes_;
-  std::vector<TubeState> tubes_;
+  // By slot (WallSlots): planes first, so that every loop over walls keeps the order the
+  // force sums have always had (planes, then cylinders).
+  std::vector<Wall> walls_;
+  int n_planes_ = 0;
 
   PairList pairs_;
   ContactStore pair_out_;  // indexed by slot (see below)
