@@ -31,10 +31,12 @@ packages=(
   clang-14 libclang-rt-14-dev                # make fuzz, make check-sanitize (libFuzzer,
                                              # ASan/UBSan runtimes; not a clang-14 dependency)
   libomp-14-dev                              # OpenMP for clang (the sanitized DEM kernels)
+  libopenmpi-dev openmpi-bin                 # MPI ensembles (docs/scale-out.md; plain C API)
 )
 if [ "$peers" -eq 1 ]; then
-  # lmp (LAMMPS 2022, GRANULAR, Open MPI) and liggghts (3.8.0); mpirun comes with openmpi-bin.
-  packages+=(lammps liggghts openmpi-bin)
+  # lmp (LAMMPS 2022, GRANULAR, Open MPI) and liggghts (3.8.0); mpirun comes with openmpi-bin
+  # (a base package since the MPI ensembles).
+  packages+=(lammps liggghts)
 fi
 
 missing=()

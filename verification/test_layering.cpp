@@ -24,10 +24,12 @@ namespace {
 // FEM-DEM assembly of shpb/assembly.hpp), so it sits above them and below shpb.
 // plot (gnuplot figures, for the program and the reports) draws shpb records and needs no
 // scene: a sibling of scene, so neither includes the other and no physics includes plotting.
+// ensemble (many runs on threads or MPI ranks) holds no physics and needs only core: a sibling
+// of scene and plot, for the program (kolsky sweep) and the reproduction sets.
 const std::map<std::string, int> kLayer = {{"core", 0}, {"time", 1},     {"psd", 2},  {"bar", 3},
                                            {"fe", 3},   {"dem", 3},      {"eos", 3},  {"coupling", 4},
                                            {"shpb", 5}, {"io", 6},       {"scene", 7}, {"plot", 7},
-                                           {"app", 8}};
+                                           {"ensemble", 7}, {"app", 8}};
 
 TEST(Layering, ModulesIncludeOnlyLowerLayers) {
   const fs::path solver = fs::path(KOLSKY_SOURCE_DIR) / "solver";
