@@ -72,9 +72,11 @@ void FeDemShpb::map_wall(fe::Surface s, int slot, const dem::WallProfile& profil
 }
 
 void FeDemShpb::step(double t, double dt) {
-  if (p_.check_dt)
-    check_time_step(dt, stable_dt(), "fe-dem", fe_.body().time(),
-                    "FE Courant bound, DEM contact limit, grain springs on the FE surface nodes");
+  forces(t);
+  advance(dt);
+}
+
+void FeDemShpb::forces(double t) {
   fe_.begin_forces(t);
   const fe::Nodes& nd = fe_.body().nodes();
   dem::DemSystem& sys = dem_.coupled_system();
@@ -108,7 +110,16 @@ void FeDemShpb::step(double t, double dt) {
     off_axis_.peak_tube_lateral =
         std::max(off_axis_.peak_tube_lateral, std::hypot(loads_[2].resultant.x, loads_[2].resultant.y));
   }
+}
+
+void FeDemShpb::advance(double dt) {
+  // Checked before either side moves, after the forces of t^n as in fe::MeshedShpb: the FE
+  // elements' Courant lengths are then those of t^n (the internal forces refresh them).
+  if (p_.check_dt)
+    check_time_step(dt, stable_dt(), "fe-dem", fe_.body().time(),
+                    "FE Courant bound, DEM contact limit, grain springs on the FE surface nodes");
   fe_.advance(dt);
+  dem::DemSystem& sys = dem_.coupled_system();
   sys.begin_step(dt);
   started_ = true;
   ++n_steps_;

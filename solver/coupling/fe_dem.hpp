@@ -65,7 +65,12 @@ class FeDemShpb {
   /// of the wall law's stiffest spring (with its damping factor). Raw: the loop's safety
   /// factor applies.
   double stable_dt() const;
-  void step(double t, double dt);
+  void step(double t, double dt);  ///< forces(t), then advance(dt)
+  /// step() in its two halves, for a loop with a point between them (shpb/assembly.hpp): the
+  /// walls shaped by the FE surfaces and the forces at t^n exchanged, then the dt check and
+  /// both sides' step to t^{n+1} with the energy check.
+  void forces(double t);
+  void advance(double dt);
 
   /// Axial contact force of the grains on bar 0/1's face at t^n, compression + (N): the sum of
   /// its ring loads.

@@ -112,6 +112,11 @@ double MeshedShpb::stable_dt() const {
 }
 
 void MeshedShpb::step(double t, double dt) {
+  forces(t);
+  advance(dt);
+}
+
+void MeshedShpb::forces(double t) {
   body_.update_internal_forces();
   Nodes& nd = body_.nodes();
   std::fill(nd.fr_ext.begin(), nd.fr_ext.end(), 0.0);
@@ -128,6 +133,9 @@ void MeshedShpb::step(double t, double dt) {
   contact_polyline(back_, nd, transmission_face_, 1, -1);
   apply_tube_contact(p_.specimen.tube, tube_, nd, p_.specimen.radius, tube_surface_);
   faces_ = {front_.total_normal(), back_.total_normal()};
+}
+
+void MeshedShpb::advance(double dt) {
   if (p_.specimen.check_dt)
     check_time_step(dt, stable_dt(), "meshed bars", body_.time(), "element Courant bound with contact springs");
   body_.advance(dt, 0.0);

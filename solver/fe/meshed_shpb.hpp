@@ -68,6 +68,10 @@ class MeshedShpb {
   /// difference step to t^{n+1}. Throws NumericalError when dt exceeds stable_dt() (check_dt),
   /// on non-finite state or when the energy balance breaks.
   void step(double t, double dt);
+  /// step() in its two halves, for a loop with a point between them (shpb/assembly.hpp): the
+  /// forces at t^n, then the step to t^{n+1} with its checks.
+  void forces(double t);
+  void advance(double dt);
 
   FaceForces face_forces() const { return faces_; }  ///< contact forces on the faces at t^n (N)
   double specimen_area() const;                      ///< pi R_s^2
