@@ -370,6 +370,7 @@ void drive(DemSpecimen& s, int from, int to, double dt) {
   for (int n = from; n < to; ++n) {
     const double u = 5.0 * dt * n;
     s.forces(FaceState{u, u, 5.0, 5.0});
+    s.apply_due_breaks();  // the caller's, between the forces and the step (as the run's hook)
     s.advance(dt);
   }
 }

@@ -87,9 +87,7 @@ std::size_t DemSpecimen::apply_due_breaks() {
   // Breaks happen here, between the forces of t^n (just evaluated by forces()) and the step
   // from t^n: the bars have the face forces of t^n already; the daughters' forces enter the
   // half kick of this step (DemSystem::edit re-evaluates them).
-  if (held_ || breaks_done_) return 0;
-  breaks_done_ = true;
-  if (!breakage_) return 0;
+  if (held_ || !breakage_) return 0;
   const BreakageCadence& cadence = breakage_->params.cadence;
   if (cadence.check_period > 0) {
     // Due once the steps since the last check span the period (to the round-off of their sum).
@@ -104,8 +102,6 @@ std::size_t DemSpecimen::apply_due_breaks() {
 
 void DemSpecimen::advance(double dt) {
   if (held_) return;
-  apply_due_breaks();
-  breaks_done_ = false;
   if (breakage_ && breakage_->params.cadence.check_period > 0) time_since_check_ += dt;
   sys_.begin_step(dt);
   stepping_ = true;

@@ -57,13 +57,15 @@ class DemSpecimen {
   /// Places the end walls at the face positions of t^n, completes the step in progress
   /// (forces at t^n, second half kick), returns the wall forces at t^n.
   FaceForces forces(const FaceState& faces);
-  /// Starts the step t^n -> t^{n+1}: the breaks due now (apply_due_breaks, unless already
-  /// called for this step), half kick with the t^n forces, drift.
+  /// Starts the step t^n -> t^{n+1}: half kick with the t^n forces, drift.
   void advance(double dt);
   /// The breaks due between the forces of t^n (forces() just returned them) and the step from
-  /// t^n, every check_interval steps (or check_period); returns the number of grains broken. A caller whose dt
-  /// may follow the limit (a run that re-plans its step after a break) calls it before
-  /// choosing the dt it hands to advance(); advance() then applies none again.
+  /// t^n, every check_interval steps (or check_period); returns the number of grains broken.
+  /// A step is forces(), apply_due_breaks(), advance(): the caller applies the breaks (the
+  /// run's after-forces hook, shpb/assembly.hpp) because a break may lower stable_dt(), and
+  /// a caller whose dt follows the limit chooses the dt it hands to advance() only after it.
+  /// A caller that skips it gets no breaks; one that calls it twice in a step counts the
+  /// cadence twice.
   std::size_t apply_due_breaks();
   SpecimenEnergy energy() const;
   /// (intrusion_front + intrusion_back) / L of the last forces() call.
@@ -128,7 +130,6 @@ class DemSpecimen {
   std::optional<BreakageState> breakage_;
   long steps_since_check_ = 0;
   double time_since_check_ = 0;   // s, advanced by advance(dt)
-  bool breaks_done_ = false;  // apply_due_breaks ran for the step advance() is about to take
   std::optional<RestRelaxationOutcome> rest_;
 };
 

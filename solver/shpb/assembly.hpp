@@ -18,7 +18,15 @@
 //   explicit A(const ExperimentSpec&)      builds what it steps; throws InputError (no path)
 //   double stable_dt() const               s
 //   double arrival_time() const            incident wave at the specimen face, s (0 for (d))
-//   void step(long n, double t, double dt, const RunControl&)   t^n -> t^{n+1}
+//   step n, t^n -> t^{n+1}, in three calls the loop makes in this order:
+//   void compute_forces(long n, double t, const RunControl&)   state and forces of t^n; the
+//                                          run's hooks of t^n (snapshots, grain-size curves)
+//   time_loop::AfterForces after_forces()  the one point between the forces of t^n and the
+//                                          step from t^n: breakage applies the due breaks
+//                                          here, and asks for replan_dt when the limit may
+//                                          have fallen and its dt may follow it; {} (a no-op)
+//                                          for an assembly with nothing to do there
+//   void advance(double dt)                t^n -> t^{n+1} with the dt the loop chose after it
 //   void observe(double t)                 output step: checks, throws NumericalError
 //   ProbeRecords probes() const            named records; samplers read *this
 //   void finish(RunResult&) const          after the loop (also after a blow-up)

@@ -52,8 +52,6 @@ FeDemBarsAssembly::FeDemBarsAssembly(const ExperimentSpec& spec)
 
 double FeDemBarsAssembly::arrival_time() const { return incident_arrival_time(BarKind::meshed, incident_spec_); }
 
-void FeDemBarsAssembly::step(long, double t, double dt, const RunControl&) { model_.step(t, dt); }
-
 void FeDemBarsAssembly::observe(double t) {
   ledger_ = model_.energy();
   if (!model_.finite() || !std::isfinite(ledger_.held()) || !std::isfinite(ledger_.applied_work))

@@ -45,8 +45,6 @@ double MeshedBarsAssembly::arrival_time() const {
   return incident_arrival_time(BarKind::meshed, incident_spec_);
 }
 
-void MeshedBarsAssembly::step(long, double t, double dt, const RunControl&) { meshed_.step(t, dt); }
-
 void MeshedBarsAssembly::observe(double t) {
   ledger_ = meshed_.energy_ledger();
   if (!meshed_.finite() || !std::isfinite(ledger_.held()) || !std::isfinite(ledger_.applied_work))

@@ -18,6 +18,7 @@
 #include "shpb/probe_record.hpp"
 #include "shpb/run_control.hpp"
 #include "shpb/run_result.hpp"
+#include "time/explicit_loop.hpp"
 
 namespace kolsky::shpb {
 
@@ -28,7 +29,11 @@ class MeshedBarsAssembly {
 
   double stable_dt() const { return meshed_.stable_dt(); }
   double arrival_time() const;  ///< L_I / c_I (s)
-  void step(long n, double t, double dt, const RunControl& control);
+  /// Step n in the loop's three calls (assembly.hpp): the forces of t^n, a hook with nothing
+  /// to do (an FE specimen's elements never change), the step to t^{n+1}.
+  void compute_forces(long, double t, const RunControl&) { meshed_.forces(t); }
+  time_loop::AfterForces after_forces() { return {}; }
+  void advance(double dt) { meshed_.advance(dt); }
   /// At an output step: throws NumericalError on a non-finite state or energy ledger, and keeps
   /// the ledger for the energy probes.
   void observe(double t);

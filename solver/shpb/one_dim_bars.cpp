@@ -95,15 +95,29 @@ double OneDimBarsAssembly::stable_dt() const {
 
 double OneDimBarsAssembly::arrival_time() const { return incident_arrival_time(kind_, incident_spec_); }
 
-void OneDimBarsAssembly::step(long n, double t, double dt, const RunControl& control) {
+void OneDimBarsAssembly::compute_forces(long n, double t, const RunControl& control) {
   FaceState faces{intrusion(incident_), intrusion(transmission_), rate(incident_), rate(transmission_)};
   if (tube_) tube_->drive(std::get<dem::DemSpecimen>(specimen_).coupled_system());
   std::visit([&](auto& sp) {
     forces_ = sp.forces(faces);
     at_forces_evaluated(sp, n, t, control);  // positions, velocities, forces all at t^n here
+  }, specimen_);
+  t_ = t;
+}
+
+time_loop::AfterForces OneDimBarsAssembly::after_forces() {
+  // The breaks of a DEM specimen; never a re-plan: the characteristic bars interpolate on a
+  // uniform time grid, so the specimen was planned for its smallest daughter up front.
+  std::visit([](auto& sp) { apply_due_breaks(sp); }, specimen_);
+  return {};
+}
+
+void OneDimBarsAssembly::advance(double dt) {
+  const double t = t_;
+  std::visit([&](auto& sp) {
     if constexpr (std::is_same_v<std::decay_t<decltype(sp)>, dem::DemSpecimen>)
       if (tube_) tube_->load_and_advance(sp.system(), dt);  // before the drift moves the grains
-    sp.advance(dt);
+    sp.advance(dt);  // (no breaks came before the tube's loads: the two are refused together)
   }, specimen_);
   std::visit([&](auto& b) { b.step(t, dt, forces_.front); }, incident_);
   std::visit([&](auto& b) { b.step(t, dt, forces_.back); }, transmission_);

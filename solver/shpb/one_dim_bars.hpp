@@ -3,7 +3,7 @@
 // DemSpecimen), coupled through the two face degrees of freedom the bars own
 // (core/specimen_coupling.hpp: face intrusions and rates in, face forces out).
 //   Step n (t^n -> t^{n+1}): the specimen takes the faces at t^n and returns the face forces at
-//   t^n, then advances its interior; each bar steps under its face force; the face waves of
+//   t^n, breaks the grains due (a DEM specimen with breakage), then advances its interior; each bar steps under its face force; the face waves of
 //   t^n update the wave energies (Eqs. 2.11-2.13, trapezoid in time) and the energy the
 //   applied pulse injected (the scale of the blow-up bound).
 //   Energy ledger (observe, at each output step): each bar reports the energy it delivered to
@@ -34,6 +34,7 @@
 #include "shpb/probe_record.hpp"
 #include "shpb/run_control.hpp"
 #include "shpb/run_result.hpp"
+#include "time/explicit_loop.hpp"
 
 namespace kolsky::shpb {
 
@@ -52,8 +53,13 @@ class OneDimBarsAssembly {
 
   double stable_dt() const;     ///< min over the specimen and both bars (s)
   double arrival_time() const;  ///< incident wave at the specimen face (s)
-  /// Step n from t = t^n. control supplies the DEM snapshot hook (specimen_models.hpp).
-  void step(long n, double t, double dt, const RunControl& control);
+  /// Step n from t = t^n in the loop's three calls (assembly.hpp). compute_forces: the
+  /// specimen's face forces at t^n; control supplies the DEM snapshot hook
+  /// (specimen_models.hpp). after_forces: the specimen's due breaks (a DEM specimen with
+  /// breakage), never a re-plan. advance: the FE tube, the specimen and the bars to t^{n+1}.
+  void compute_forces(long n, double t, const RunControl& control);
+  time_loop::AfterForces after_forces();
+  void advance(double dt);
   /// At an output step: checks finiteness and the energy ledger (throws NumericalError) and
   /// keeps the ledger for the energy_held / energy_delivered probes.
   void observe(double t);
@@ -80,6 +86,7 @@ class OneDimBarsAssembly {
   Bar incident_, transmission_;
   std::optional<coupling::FeTube> tube_;  // specimen.tube = meshed (dem specimen)
   FaceForces forces_;
+  double t_ = 0;                        // t^n of the step in progress (compute_forces)
   double w_i_ = 0, w_r_ = 0, w_t_ = 0;  // Eqs. 2.11-2.13 from the face waves
   double prev_[3] = {0, 0, 0};          // s_i, s_r, s_t at the previous step
   double injected_ = 0;                 // A/(rho c) * integral sigma_app^2 dt

@@ -229,7 +229,7 @@ RunResult SimulatedShpb::run_on(A& assembly, Progress* progress, const RunContro
     if (!end_probe)
       throw InputError("", "loading.end_at_back_stress", "this assembly records no back-wall stress (loading.kind = strain_rate only)");
   }
-  auto step = [&](long n, double t, double dt) {
+  auto step = [&](long n, double t, double) {
     if (control.stop && *control.stop) {
       std::ostringstream msg;
       msg << std::setprecision(6) << "stopped on request (signal) before the step at t = " << t << " s";
@@ -239,18 +239,13 @@ RunResult SimulatedShpb::run_on(A& assembly, Progress* progress, const RunContro
       control.checkpoint(save_state(r, n, s));
     if (control.progress && control.progress_every > 0 && n > first && s.due(n, control.progress_every))
       control.progress(n, t);
-    if constexpr (requires { assembly.complete_to(n, t, hooks); }) {
-      if (assembly.refines_dt()) {
-        // Ask the limit again after a break, before this step's dt is used (time_loop::refine).
-        assembly.complete_to(s.tick(n), t, hooks);
-        if (assembly.apply_due_breaks() > 0 && time_loop::refine(s, n, assembly.stable_dt(), safety))
-          hooks.snapshot_every = control.snapshot_every * s.ticks_per_planned_step;
-        assembly.advance(s.dt);
-        ++r.steps;
-        return;
-      }
-    }
-    assembly.step(n, t, dt, hooks);
+    // Every assembly's step in the same three calls (assembly.hpp). The hooks see step n on the
+    // schedule's ticks; between the forces of t^n and the step from t^n, the after-forces
+    // hook may ask for the limit again (a break), and dt is refined before it is used.
+    assembly.compute_forces(s.tick(n), t, hooks);
+    if (assembly.after_forces().replan_dt && time_loop::refine(s, n, assembly.stable_dt(), safety))
+      hooks.snapshot_every = control.snapshot_every * s.ticks_per_planned_step;
+    assembly.advance(s.dt);
     ++r.steps;
   };
   auto sample = [&](double t) {

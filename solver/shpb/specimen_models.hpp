@@ -9,9 +9,14 @@
 //   at_forces_evaluated     called between forces() and advance() of step n: the one point of
 //                           a step where positions, velocities and forces all belong to t^n,
 //                           hence where DEM particle snapshots are taken (RunControl::snapshot)
+//   apply_due_breaks        the assembly's after-forces hook (assembly.hpp), right after
+//                           at_forces_evaluated: the grains due to break now (a DEM specimen
+//                           with breakage; 0, nothing done, for the others); returns how many
 //   add_model_probes        probes only this model records, appended after the bar gauges
-// A new specimen model adds its three overloads here (the compiler asks for them).
+// A new specimen model adds its four overloads here (the compiler asks for them).
 #pragma once
+#include <cstddef>
+
 #include "bar/specimen_column.hpp"
 #include "dem/dem_specimen.hpp"
 #include "fe/fe_specimen.hpp"
@@ -34,6 +39,10 @@ inline void at_forces_evaluated(const dem::DemSpecimen& d, long n, double t, con
       c.grain_size_curve(n, t, dem::current_grain_size_curve(*d.breakage(), d.system().particles()));
   }
 }
+
+inline std::size_t apply_due_breaks(bar::SpecimenColumn&) { return 0; }
+inline std::size_t apply_due_breaks(fe::FeSpecimen&) { return 0; }
+inline std::size_t apply_due_breaks(dem::DemSpecimen& d) { return d.apply_due_breaks(); }
 
 inline void add_model_probes(const bar::SpecimenColumn&, ProbeRecords&) {}
 inline void add_model_probes(const fe::FeSpecimen&, ProbeRecords&) {}

@@ -58,12 +58,7 @@ StrainRateWallsAssembly::StrainRateWallsAssembly(const ExperimentSpec& spec)
       length_(specimen_.length()),
       area_(specimen_.area()) {}
 
-void StrainRateWallsAssembly::step(long n, double t, double dt, const RunControl& control) {
-  complete_to(n, t, control);
-  advance(dt);
-}
-
-void StrainRateWallsAssembly::complete_to(long n, double t, const RunControl& control) {
+void StrainRateWallsAssembly::compute_forces(long n, double t, const RunControl& control) {
   // The walls at t^n: Eq. 5.1 strain over the initial length (engineering strain).
   const FaceState now{length_ * history_.strain(t), 0.0, length_ * history_.rate(t), 0.0};
   const FaceForces f = specimen_.forces(now);

@@ -6,8 +6,8 @@
 //   integral of the tabulated rate (strain_rate_history.hpp) and L0 the initial specimen
 //   length: eps is an engineering strain (u over the initial length), so the wall speed is
 //   L0 rate, not L(t) rate. Transmission-side wall: fixed (u = 0, speed 0).
-//   Step n (t^n -> t^{n+1}): walls placed at t^n, the specimen returns the wall forces at t^n
-//   and advances; the wall work is the trapezoid of force and wall displacement between steps
+//   Step n (t^n -> t^{n+1}): walls placed at t^n, the specimen returns the wall forces at t^n,
+//   breaks the grains due and advances; the wall work is the trapezoid of force and wall displacement between steps
 //   (as DemSystem books a moving plane's work).
 //   Face stresses: wall force / (pi R^2), R the tube radius (the specimen's cross-section).
 //   Probes: the applied strain and rate, front, back and average stress (Eq. 4.16), alpha
@@ -31,6 +31,7 @@
 #include "shpb/run_control.hpp"
 #include "shpb/run_result.hpp"
 #include "shpb/strain_rate_history.hpp"
+#include "time/explicit_loop.hpp"
 
 namespace kolsky::shpb {
 
@@ -43,16 +44,15 @@ class StrainRateWallsAssembly {
 
   double stable_dt() const { return specimen_.stable_dt(); }  ///< the specimen's raw limit, s
   double arrival_time() const { return 0.0; }  ///< no wave to wait for: loading starts at t = 0
-  void step(long n, double t, double dt, const RunControl& control);  ///< complete_to + advance
-  /// Step n in two halves, for a loop that re-plans dt after a break (refines_dt()): the walls
-  /// at t^n and their forces (hooks of t^n, wall work), then the breaks due (the specimen's
-  /// limit may fall), then advance(dt) with the dt the loop chose in between.
-  void complete_to(long n, double t, const RunControl& control);
-  std::size_t apply_due_breaks() { return specimen_.apply_due_breaks(); }
+  /// Step n in the loop's three calls (assembly.hpp). compute_forces: the walls at t^n and
+  /// their forces (hooks of t^n, wall work).
+  void compute_forces(long n, double t, const RunControl& control);
+  /// The breaks due (the specimen's limit may fall); asks the loop to re-plan dt after a break
+  /// when the run refines its step (time.dt = 0 with time.refine_after_breaks: the specimen
+  /// was then built without planning for the smallest daughter up front).
+  time_loop::AfterForces after_forces() { return {specimen_.apply_due_breaks() > 0 && refines_dt_}; }
+  /// The step from t^n with the dt the loop chose after the hook.
   void advance(double dt) { specimen_.advance(dt); }
-  /// Whether the loop should ask the limit again after a break and refine dt (time.dt = 0:
-  /// the specimen was then built without planning for the smallest daughter up front).
-  bool refines_dt() const { return refines_dt_; }
   /// At an output step: finiteness and the energy ledger (throws NumericalError).
   void observe(double t);
   ProbeRecords probes() const;       ///< samplers read *this (probe_record.hpp, "Lifetime")

@@ -62,6 +62,16 @@ Schedule plan_steps(const StepPolicy& p, double stable_dt);
 /// positive number): the run stops as a failure, what was sampled kept.
 bool refine(Schedule& s, long n, double limit, double safety_factor);
 
+/// What a model asks of the loop at the after-forces point of a step: after the forces of
+/// t^n, before the step from t^n takes its dt. The one event there today is breakage, which
+/// replaces grains by smaller daughters and so may lower the limit; a model whose dt may follow
+/// its limit then asks for a re-plan, and the loop asks the limit again and refines dt when it
+/// no longer fits (refine above). A plain value, so that a model without such events returns
+/// {} and the loop needs no branch on what the model is.
+struct AfterForces {
+  bool replan_dt = false;  ///< the limit may have fallen: ask it again before choosing dt
+};
+
 /// Runs the steps n = first .. s.n_steps - 1 at t^n = s.time_of(n); samples after the steps
 /// due every s.sample_every planned steps, i.e. at the times t^n whose state the step just
 /// completed. step(n, t, dt) may refine s (refine above) for the step it is taking: the loop
