@@ -4,8 +4,8 @@
 //   loaded on to the text's final count must show the text's B_r there;
 // - the pair apart at 1-20 MPa: the N = 1 specimen breaks earlier, so without breakage the two
 //   N must coincide there;
-// - c_lim = 0 breaking fewer parents by the end: it is much softer, so at equal stress it must
-//   break more than twice the parents of c_lim = 8.
+// - c_lim = 0 breaking fewer parents by the end: tested as "it is much softer, so at equal stress
+//   it breaks more than twice the parents of c_lim = 8", refuted (1.40); kept as a measurement.
 #include <algorithm>
 #include <cmath>
 
@@ -77,18 +77,18 @@ void wang_companions(Study& s, const WangCompanionCases& c, std::string& md) {
     }
   }
 
-  // c_lim = 0 against c_lim = 8 at equal back stress: 0.9 x the smaller of their largest.
+  // c_lim = 0 against c_lim = 8 at equal back stress: 0.9 x the smaller of their largest. It was
+  // the companion of clim0_breaks_more and failed (ratio 1.40 <= 2, README): the explanation
+  // is refuted, the target stays red, and the ratio is recorded without a target.
   {
-    const char* id = "ch5.wang.clim0_breaks_more_equal_stress";
     const CaseResult &base = *c.clim8, &clim0 = *c.clim0;
     if (base.ok && clim0.ok) {
       const double level = spec.at("equal_stress_fraction").get<double>() *
                            std::min(largest(base.stress_back), largest(clim0.stress_back));
       const double kb = broken_at_stress(base, level), k0 = broken_at_stress(clim0, level);
-      const double rule = s.threshold(id, "min_broken_ratio");
-      m.trend(id, k0 > rule * kb,
-              fmt("broken parents at back stress %.1f MPa: c_lim = 0 %.0f, c_lim = 8 %.0f (ratio %.2f; > %gx)", level / 1e6, k0,
-                  kb, k0 / kb, rule));
+      m.scalar("ch5.wang.clim0_broken_ratio_equal_stress", k0 / kb);
+      m.note("ch5.wang.clim0_broken_ratio_equal_stress",
+             fmt("broken parents at back stress %.1f MPa: c_lim = 0 %.0f, c_lim = 8 %.0f", level / 1e6, k0, kb));
       md += fmt("- At equal back stress (%.1f MPa) c_lim = 0 has broken %.0f parents, c_lim = 8 %.0f (ratio %.2f).\n",
                 level / 1e6, k0, kb, k0 / kb);
     }
