@@ -21,6 +21,7 @@
 #include "shpb/one_dim_bars.hpp"
 #include "shpb/simulation.hpp"
 #include "shpb/strain_rate_walls.hpp"
+#include "test_breaking_walls.hpp"
 #include "test_support.hpp"
 #include "time/explicit_loop.hpp"
 
@@ -35,15 +36,7 @@ struct AfterForcesHook : ::testing::Test {
   testing::TempDir dir{"kolsky_test_after_forces"};
   scene::Scene walls(double end, bool refine) {
     std::ofstream(dir.file("rate.csv")) << "time_s,strain_rate\n0,0\n10e-6,1200\n1,1200\n";
-    json j = {{"loading", {{"kind", "strain_rate"}, {"file", "rate.csv"}}},
-              {"specimen", {{"model", "dem"},
-                            {"grain_size_curve", std::string(KOLSKY_SOURCE_DIR) +
-                                                     "/data/digitized/chapter4/song2009_psd_reconstructed.csv"},
-                            {"upscale", 5.0}, {"seed", 7}, {"length", 0.006}, {"diameter", 0.008},
-                            {"wall_friction", 0.3},
-                            {"breakage", {{"sigma_lim0", 1.0e9}, {"coordination_limit", 0}}}}},
-              {"time", {{"end", end}}},
-              {"output", {{"interval", 1e-6}}}};
+    json j = testing::breaking_walls_scene("rate.csv", end);
     if (refine) j["time"]["refine_after_breaks"] = true;
     return scene::parse_scene(j, "walls.json", dir.str());
   }

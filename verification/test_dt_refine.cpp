@@ -18,6 +18,7 @@
 #include "io/checkpoint_hdf5.hpp"
 #include "scene/scene.hpp"
 #include "shpb/simulation.hpp"
+#include "test_breaking_walls.hpp"
 #include "test_support.hpp"
 #include "time/explicit_loop.hpp"
 
@@ -77,25 +78,11 @@ TEST(DtRefine, ScheduleKeepsEveryCadenceOnItsTimes) {
   EXPECT_THROW(time_loop::refine(s, 1001, std::nan(""), 0.5), NumericalError);
 }
 
-// The small walls specimen of test_strain_rate_walls (~250 grains, N = 5) with a low strength
-// and no coordination limit, at 1200/s: grains break within the first 20 us.
-json breaking_walls_scene(const std::string& rate_csv, double end) {
-  return {{"loading", {{"kind", "strain_rate"}, {"file", rate_csv}}},
-          {"specimen", {{"model", "dem"},
-                        {"grain_size_curve", std::string(KOLSKY_SOURCE_DIR) +
-                                                 "/data/digitized/chapter4/song2009_psd_reconstructed.csv"},
-                        {"upscale", 5.0}, {"seed", 7}, {"length", 0.006}, {"diameter", 0.008},
-                        {"wall_friction", 0.3},
-                        {"breakage", {{"sigma_lim0", 1.0e9}, {"coordination_limit", 0}}}}},
-          {"time", {{"end", end}}},
-          {"output", {{"interval", 1e-6}}}};
-}
-
 struct DtRefineRun : ::testing::Test {
   testing::TempDir dir{"kolsky_test_dt_refine"};
   scene::Scene parse(double end, double dt = 0.0, bool refine = true) {
     std::ofstream(dir.file("rate.csv")) << "time_s,strain_rate\n0,0\n10e-6,1200\n1,1200\n";
-    json j = breaking_walls_scene("rate.csv", end);
+    json j = testing::breaking_walls_scene("rate.csv", end);
     if (dt > 0) j["time"]["dt"] = dt;
     if (refine) j["time"]["refine_after_breaks"] = true;  // the default is the up-front plan
     return scene::parse_scene(j, "walls.json", dir.str());
@@ -181,7 +168,7 @@ TEST_F(DtRefineRun, CheckPeriodKeepsTheChecksApartInTime) {
   // at checks, and checks lie at least the period apart in simulated time. Sampled every step
   // (output.interval below dt rounds to one step).
   std::ofstream(dir.file("rate.csv")) << "time_s,strain_rate\n0,0\n10e-6,1200\n1,1200\n";
-  json j = breaking_walls_scene("rate.csv", 40e-6);
+  json j = testing::breaking_walls_scene("rate.csv", 40e-6);
   j["time"]["refine_after_breaks"] = true;
   j["output"]["interval"] = 1e-15;
   const double period = 2e-6;
