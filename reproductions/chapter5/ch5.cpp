@@ -8,7 +8,7 @@
 #include <stdexcept>
 
 #include "common/perturb.hpp"
-#include "common/scene_override.hpp"
+#include "harness/case_pipeline.hpp"
 #include "scene/scene.hpp"
 #include "shpb/simulation.hpp"
 
@@ -46,8 +46,7 @@ nlohmann::json case_scene(const CaseSpec& spec, const std::string& dir, const st
   if (!spec.loading_file.empty()) j["loading"]["file"] = spec.loading_file;
   if (spec.end_at_back_stress >= 0) j["loading"]["end_at_back_stress"] = spec.end_at_back_stress;
   if (spec.seed >= 0) s["seed"] = spec.seed;
-  for (const std::string& item : spec.sets)
-    if (!repro::set_scene_key(j, item)) throw std::runtime_error("scene override '" + item + "' is not key=JSON");
+  for (const std::string& item : spec.sets) harness::apply_change(j, harness::parse_change(item, spec.scene), spec.scene);
   return j;
 }
 

@@ -37,7 +37,7 @@ struct CaseSpec {
   std::string loading_file;   ///< loading.file, relative to reproductions/chapter5/
   double end_at_back_stress = -1;  ///< loading.end_at_back_stress, Pa
   long seed = -1;                  ///< specimen.seed (the packing's)
-  std::vector<std::string> sets;   ///< "dotted.key=JSON" overrides (common/scene_override.hpp)
+  std::vector<std::string> sets;   ///< "dotted.key=JSON" changes (harness/case_pipeline.hpp)
 };
 
 /// One grain-size curve of the specimen (grains + fines) at time t, in the specimen's sizes.

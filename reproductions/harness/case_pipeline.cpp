@@ -21,30 +21,6 @@ double seconds_since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
-/// Applies one change, following its path one part at a time: each part names a member of an
-/// object (a null on the way becomes an object, as nlohmann's operator[] makes it). A removal
-/// creates nothing: a key that is not there is already removed.
-void apply(nlohmann::json& scene, const SceneChange& ch, const std::string& file) {
-  const bool removal = ch.value.is_null();
-  nlohmann::json* at = &scene;
-  std::string rest = ch.key;
-  for (;;) {
-    const auto dot = rest.find('.');
-    const std::string part = rest.substr(0, dot);
-    if (part.empty()) throw InputError(file, ch.key, "a change's dotted key has an empty part");
-    if (!at->is_object() && !at->is_null())
-      throw InputError(file, ch.key, "a change's path goes through a " + std::string(at->type_name()) +
-                                         ", not an object");
-    if (dot == std::string::npos) {
-      if (!removal) (*at)[part] = ch.value;
-      else if (at->is_object()) at->erase(part);
-      return;
-    }
-    if (removal && !(at->is_object() && at->contains(part))) return;
-    at = &(*at)[part];
-    rest = rest.substr(dot + 1);
-  }
-}
 
 void flatten(const nlohmann::json& patch, const std::string& prefix, std::vector<SceneChange>& out) {
   for (const auto& [k, v] : patch.items()) {
@@ -70,6 +46,31 @@ SceneChange parse_change(const std::string& item, const std::string& origin) {
   return ch;
 }
 
+// Each part of the path names a member of an object (a null on the way becomes an object, as
+// nlohmann's operator[] makes it). A removal creates nothing: a key that is not there is
+// already removed.
+void apply_change(nlohmann::json& scene, const SceneChange& ch, const std::string& file) {
+  const bool removal = ch.value.is_null();
+  nlohmann::json* at = &scene;
+  std::string rest = ch.key;
+  for (;;) {
+    const auto dot = rest.find('.');
+    const std::string part = rest.substr(0, dot);
+    if (part.empty()) throw InputError(file, ch.key, "a change's dotted key has an empty part");
+    if (!at->is_object() && !at->is_null())
+      throw InputError(file, ch.key, "a change's path goes through a " + std::string(at->type_name()) +
+                                         ", not an object");
+    if (dot == std::string::npos) {
+      if (!removal) (*at)[part] = ch.value;
+      else if (at->is_object()) at->erase(part);
+      return;
+    }
+    if (removal && !(at->is_object() && at->contains(part))) return;
+    at = &(*at)[part];
+    rest = rest.substr(dot + 1);
+  }
+}
+
 std::vector<SceneChange> changes_from_patch(const nlohmann::json& patch) {
   if (!patch.is_object()) throw InputError("", "", "a merge patch must be a JSON object");
   std::vector<SceneChange> out;
@@ -88,7 +89,7 @@ nlohmann::json final_scene(const Case& c) {
   nlohmann::json j = c.scene;
   if (!c.packing_cache.empty())
     j["specimen"]["packing_cache"] = std::filesystem::absolute(c.packing_cache).string();
-  for (const auto& ch : c.changes) apply(j, ch, c.scene_path);
+  for (const auto& ch : c.changes) apply_change(j, ch, c.scene_path);
   return j;
 }
 

@@ -38,6 +38,11 @@ struct SceneChange {
 /// `origin` and the item for an item without '=', an empty key, or a value that is not JSON.
 SceneChange parse_change(const std::string& item, const std::string& origin);
 
+/// Applies one change to a scene's JSON, creating the objects on its path (null removes the
+/// key; removing a key that is not there does nothing). InputError(file, key, ...) for a path
+/// with an empty part or one that goes through a value that is not an object.
+void apply_change(nlohmann::json& scene, const SceneChange& change, const std::string& file);
+
 /// An RFC 7386 merge patch (the Chapter 3 studies file writes its variants so) as the changes
 /// that make it: one per leaf, in key order; a nested object is descended, anything else
 /// (arrays included) replaces the key whole, null removes it. InputError for a key holding a

@@ -17,7 +17,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "common/scene_override.hpp"
+#include "harness/case_pipeline.hpp"
 #include "common/study_args.hpp"
 #include "core/atomic_file.hpp"
 #include "core/errors.hpp"
@@ -101,8 +101,7 @@ int main(int argc, char** argv) {
     if (o.rolling >= 0) j["specimen"]["rolling_factor"] = o.rolling;
     if (o.diameter > 0) j["specimen"]["diameter"] = o.diameter;
     if (o.length > 0) j["specimen"]["length"] = o.length;
-    for (const std::string& s : o.sets)
-      if (!repro::set_scene_key(j, s)) usage(1);
+    for (const std::string& s : o.sets) harness::apply_change(j, harness::parse_change(s, "--set"), o.scene);
     const std::string dir = std::filesystem::path(o.scene).parent_path().string();
     auto sc = scene::parse_scene(j, o.scene, dir);
     auto& dp = std::get<dem::DemSpecimenParams>(sc.spec.specimen);
