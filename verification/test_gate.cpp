@@ -149,6 +149,7 @@ TEST(Gate, EveryVerdict) {
   EXPECT_EQ(rows[3].id, "a.new");
   EXPECT_EQ(rows[3].verdict, Verdict::added);
   EXPECT_TRUE(rows[3].fails());
+  EXPECT_EQ(rows[3].now, "1");  // a new id shows the value a rebaseline would record
   // A moved row's table names the value, both numbers and why the tolerance is what it is.
   const auto moved = compare_to_baseline(b, run(11.0, true, {0, 1, 2}).m);
   const std::string table = gate_table_text({moved[1]});

@@ -132,7 +132,10 @@ std::vector<GateRow> compare_to_baseline(const Baseline& b, const Measurements& 
     r.id = id;
     r.kind = now.kind;
     r.baseline = "-";
-    r.now = to_string(now.kind);
+    // The value a rebaseline records (the log's reader sees it, not just its kind).
+    r.now = now.kind == Kind::scalar  ? g(now.value)
+            : now.kind == Kind::trend ? (now.holds ? "holds" : "does not hold")
+                                      : "curve of " + std::to_string(now.curve.x.size()) + " points";
     r.verdict = Verdict::added;
     r.why = "not in the baseline: `make rebaseline` records it (with a reason)";
     rows.push_back(std::move(r));
