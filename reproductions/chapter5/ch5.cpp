@@ -153,6 +153,8 @@ double stress_at_strain(const CaseResult& c, double e) {
   return NAN;
 }
 
+double max_of(const std::vector<double>& v) { return v.empty() ? NAN : *std::max_element(v.begin(), v.end()); }
+
 long first_at_least(const std::vector<double>& v, double level) {
   for (std::size_t k = 0; k < v.size(); ++k)
     if (v[k] >= level) return static_cast<long>(k);

@@ -80,6 +80,9 @@ nlohmann::json case_scene(const CaseSpec& spec, const std::string& dir, const st
 /// between samples; NaN outside it.
 double stress_at_strain(const CaseResult& c, double e);
 
+/// The largest value of v (NaN for none).
+double max_of(const std::vector<double>& v);
+
 /// Index of the first sample with v >= level, or -1.
 long first_at_least(const std::vector<double>& v, double level);
 

@@ -15,8 +15,6 @@ namespace kolsky::ch5 {
 
 namespace {
 
-double max_of(const std::vector<double>& v) { return v.empty() ? NAN : *std::max_element(v.begin(), v.end()); }
-
 harness::PlotSeries stress_series(const CaseResult& c, const std::string& label) {
   harness::PlotSeries p = series(label);
   for (std::size_t k = 0; k < c.t.size(); ++k) {

@@ -13,12 +13,6 @@
 
 namespace kolsky::ch5 {
 
-namespace {
-
-double largest(const std::vector<double>& v) { return v.empty() ? NAN : *std::max_element(v.begin(), v.end()); }
-
-}  // namespace
-
 void wang_companions(Study& s, const WangCompanionCases& c, std::string& md) {
   auto& m = *s.m;
   const auto& w = s.cases.at("wang");
@@ -50,7 +44,7 @@ void wang_companions(Study& s, const WangCompanionCases& c, std::string& md) {
                 r.relative_breakage[k], r.wall_s);
     } else {
       m.note(id, r.ok ? fmt("the count %.0f was not reached (largest %.0f grains, back stress %.1f MPa)", count,
-                            largest(r.grain_count), largest(r.stress_back) / 1e6)
+                            max_of(r.grain_count), max_of(r.stress_back) / 1e6)
                       : "run failed: " + r.failure);
       md += "- The pair loaded on: the text's final count not reached.\n";
     }
@@ -84,7 +78,7 @@ void wang_companions(Study& s, const WangCompanionCases& c, std::string& md) {
     const CaseResult &base = *c.clim8, &clim0 = *c.clim0;
     if (base.ok && clim0.ok) {
       const double level = spec.at("equal_stress_fraction").get<double>() *
-                           std::min(largest(base.stress_back), largest(clim0.stress_back));
+                           std::min(max_of(base.stress_back), max_of(clim0.stress_back));
       const double kb = broken_at_stress(base, level), k0 = broken_at_stress(clim0, level);
       m.scalar("ch5.wang.clim0_broken_ratio_equal_stress", k0 / kb);
       m.note("ch5.wang.clim0_broken_ratio_equal_stress",
