@@ -25,13 +25,18 @@ std::vector<std::size_t> schedule_order(const std::vector<EnsembleMember>& membe
   return order;
 }
 
-bool cache_load(const std::string& cache_dir, const std::string& key, nlohmann::json* value) {
-  if (cache_dir.empty() || key.empty()) return false;
-  const std::string file = cache_dir + "/" + key + ".json";
-  if (!std::filesystem::exists(file)) return false;
+std::optional<MemberResult> cached_result(const EnsembleMember& member, const std::string& cache_dir, int rank) {
+  if (cache_dir.empty() || member.key.empty()) return std::nullopt;
+  const std::string file = cache_dir + "/" + member.key + ".json";
+  if (!std::filesystem::exists(file)) return std::nullopt;
+  MemberResult r;
+  r.label = member.label;
+  r.key = member.key;
+  r.rank = rank;
   std::ifstream in(file);
-  *value = nlohmann::json::parse(in);  // written by cache_store: complete, or not there at all
-  return true;
+  r.value = nlohmann::json::parse(in);  // written by cache_store: complete, or not there at all
+  r.ok = r.cached = true;
+  return r;
 }
 
 void cache_store(const std::string& cache_dir, const std::string& key, const nlohmann::json& value) {
@@ -41,14 +46,11 @@ void cache_store(const std::string& cache_dir, const std::string& key, const nlo
 }
 
 MemberResult run_member(const EnsembleMember& member, const std::string& cache_dir, int rank) {
+  if (auto hit = cached_result(member, cache_dir, rank)) return std::move(*hit);
   MemberResult r;
   r.label = member.label;
   r.key = member.key;
   r.rank = rank;
-  if (cache_load(cache_dir, member.key, &r.value)) {
-    r.ok = r.cached = true;
-    return r;
-  }
   const auto start = std::chrono::steady_clock::now();
   try {
     r.value = member.run();

@@ -76,11 +76,8 @@ void schedule_on_root(const std::vector<EnsembleMember>& members, const Ensemble
   // Cached members are answered here and never sent.
   std::vector<std::size_t> queue;
   for (std::size_t m : order) {
-    nlohmann::json v;
-    if (cache_load(o.cache_dir, members[m].key, &v)) {
-      MemberResult r;
-      r.label = members[m].label, r.key = members[m].key, r.ok = r.cached = true, r.value = std::move(v);
-      finish(m, std::move(r));
+    if (auto hit = cached_result(members[m], o.cache_dir, 0)) {
+      finish(m, std::move(*hit));
     } else {
       queue.push_back(m);
     }

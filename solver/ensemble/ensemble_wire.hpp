@@ -2,13 +2,15 @@
 // with enough digits to read back bit for bit, nlohmann::json's round-trip formatting).
 #pragma once
 #include <nlohmann/json.hpp>
+#include <optional>
 
 #include "ensemble/ensemble.hpp"
 
 namespace kolsky::ensemble {
 
-/// The result cached under `key` in `cache_dir` (false: none, or no cache / key).
-bool cache_load(const std::string& cache_dir, const std::string& key, nlohmann::json* value);
+/// The member's result from the cache (ok and cached set), or nothing: no cache, no key, or
+/// no file under its key.
+std::optional<MemberResult> cached_result(const EnsembleMember& member, const std::string& cache_dir, int rank);
 /// Stores a result under its key, atomically (no-op without a cache or key).
 void cache_store(const std::string& cache_dir, const std::string& key, const nlohmann::json& value);
 
