@@ -7,7 +7,7 @@
 // and the wall times. No hook is bent to another use and nothing reaches into the assembly.
 //
 // A case also has a content key (content_key): FNV-1a over the final scene's JSON text and the
-// binary's version, the identity by which a later ensemble layer (issue 33) caches members.
+// binary's version, the identity by which the ensemble layer (issue 33) caches members.
 // The packing cache's folder is left out of it (it says where packings are kept, not what is
 // run); files a scene names by path (a loading table) enter by their path, not their bytes.
 #pragma once
@@ -21,33 +21,19 @@
 
 #include "dem/packing_cache.hpp"
 #include "psd/grain_size_curve.hpp"
+#include "scene/scene_change.hpp"
 #include "shpb/analysis.hpp"
 #include "shpb/run_result.hpp"
 
 namespace kolsky::harness {
 
-/// One change of a scene: `key` a dotted path ("specimen.rolling_factor"), `value` the JSON it
-/// takes (the objects on its path are created); null removes the key (a key another change
-/// makes unused, e.g. the tube_* keys of an FE tube set to rigid).
-struct SceneChange {
-  std::string key;
-  nlohmann::json value;
-};
-
-/// "dotted.key=JSON" (a study's --set, KOLSKY_CH4_SET) as a change. Throws InputError naming
-/// `origin` and the item for an item without '=', an empty key, or a value that is not JSON.
-SceneChange parse_change(const std::string& item, const std::string& origin);
-
-/// Applies one change to a scene's JSON, creating the objects on its path (null removes the
-/// key; removing a key that is not there does nothing). InputError(file, key, ...) for a path
-/// with an empty part or one that goes through a value that is not an object.
-void apply_change(nlohmann::json& scene, const SceneChange& change, const std::string& file);
-
-/// An RFC 7386 merge patch (the Chapter 3 studies file writes its variants so) as the changes
-/// that make it: one per leaf, in key order; a nested object is descended, anything else
-/// (arrays included) replaces the key whole, null removes it. InputError for a key holding a
-/// '.' (it could not be told from a path) or a patch that is not an object.
-std::vector<SceneChange> changes_from_patch(const nlohmann::json& patch);
+// The changes and the content key live in the scene module (scene/scene_change.hpp), shared
+// with `kolsky sweep`; the sets name them through the harness as they always have.
+using scene::apply_change;
+using scene::binary_version;
+using scene::changes_from_patch;
+using scene::parse_change;
+using scene::SceneChange;
 
 struct Case {
   std::string label;
@@ -75,12 +61,8 @@ std::string scene_dir(const Case& c);
 /// step): InputError for a bad change or a scene the reader refuses.
 void validate(const Case& c);
 
-/// "kolsky <version> <commit>": the binary a case's results come from.
-std::string binary_version();
-
-/// FNV-1a 64 (core/hash.hpp) of binary_version() and the final scene's JSON text (nlohmann's
-/// dump: keys sorted, numbers round-tripping) with specimen.packing_cache removed, as 16 hex
-/// digits. The same case, however its changes are written, has the same key.
+/// scene::content_key of the final scene: the same case, however its changes are written, has
+/// the same key.
 std::string content_key(const Case& c);
 
 /// The packing of a DEM case, through its cache, with a progress line headed by the case's
