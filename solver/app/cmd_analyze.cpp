@@ -12,12 +12,12 @@
 #include "app/commands.hpp"
 #include "app/plot_output.hpp"
 #include "app/run_checks.hpp"
-#include "app/summary.hpp"
 #include "core/errors.hpp"
 #include "io/csv.hpp"
 #include "plot/shpb_figures.hpp"
 #include "scene/scene.hpp"
 #include "shpb/gauge_processing.hpp"
+#include "shpb/summary.hpp"
 
 namespace kolsky::app {
 
@@ -91,14 +91,14 @@ int cmd_analyze(const std::vector<std::string>& args) {
                     "\nt = 0 at the incident arrival at the specimen face; bar strains "
                     "compression positive; specimen stress/strain compression positive");
 
-  auto s = summarize(waves, h);
+  auto s = shpb::summarize(waves, h);
   s["offset_incident"] = report.offset_incident;
   s["offset_transmitted"] = report.offset_transmitted;
   s["noise_incident"] = report.noise_incident;
   s["start_time_at_gauge_s"] = report.start_time;
   s["window_s"] = report.window;
   std::printf("kolsky analyze: %s -> %s\n", file.c_str(), out.c_str());
-  if (!o.quiet) std::fputs(format_summary(s).c_str(), stdout);
+  if (!o.quiet) std::fputs(shpb::format_summary(s).c_str(), stdout);
   for (const auto& w : report.warnings) std::fprintf(stderr, "kolsky analyze: warning: %s\n", w.c_str());
   if (!o.plot_dir.empty())
     write_plots(plot::analyze_figures(rec, report, bars.setup, waves, h, file), o.plot_dir, gnuplot,

@@ -18,7 +18,6 @@
 #include "app/interrupt.hpp"
 #include "app/plot_output.hpp"
 #include "app/run_checks.hpp"
-#include "app/summary.hpp"
 #include "core/progress.hpp"
 #include "io/checkpoint_hdf5.hpp"
 #include "io/csv.hpp"
@@ -27,6 +26,7 @@
 #include "plot/shpb_figures.hpp"
 #include "scene/scene.hpp"
 #include "shpb/simulation.hpp"
+#include "shpb/summary.hpp"
 #include "core/build_info.hpp"
 
 namespace kolsky::app {
@@ -256,7 +256,7 @@ int cmd_run(const std::vector<std::string>& args) {
   // are the result, and the analysis of too short a record must not replace them.
   const bool analysed = r.complete || sim->can_analyze(r);
   const shpb::RunAnalysis analysis = analysed ? sim->analyze(r) : shpb::RunAnalysis{};
-  const auto summary = summarize(analysis.waves, analysis.history);
+  const auto summary = shpb::summarize(analysis.waves, analysis.history);
   io::RunRecord rec = to_record(sc, r, analysis.history, summary);
   if (resume) rec.meta["restarted_from"] = o.restart;
   if (!initial_wall_stress.is_null()) rec.meta["initial_wall_stress_pa"] = initial_wall_stress;
@@ -302,7 +302,7 @@ int cmd_run(const std::vector<std::string>& args) {
     std::printf("  %-26s %.6g (refined %ld times after breaks)\n", "dt_final_s", r.dt_final,
                 r.dt_refinements);
   if (!r.ended_by.empty()) std::printf("  %-26s %s\n", "ended_by", r.ended_by.c_str());
-  std::fputs(format_summary(summary).c_str(), stdout);
+  std::fputs(shpb::format_summary(summary).c_str(), stdout);
   if (!o.plot_dir.empty() && analysed)
     write_plots(plot::run_figures(r, analysis.waves, analysis.history, file), o.plot_dir, gnuplot, "run");
   else if (!o.plot_dir.empty())

@@ -1,12 +1,12 @@
-#include "app/summary.hpp"
+#include "shpb/summary.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 
-namespace kolsky::app {
+namespace kolsky::shpb {
 
-nlohmann::json summarize(const shpb::FaceWaves& w, const shpb::SpecimenHistory& h) {
+nlohmann::json summarize(const FaceWaves& w, const SpecimenHistory& h) {
   nlohmann::json s;
   if (h.t.empty()) return s;
   const long n = static_cast<long>(h.t.size());
@@ -30,9 +30,9 @@ nlohmann::json summarize(const shpb::FaceWaves& w, const shpb::SpecimenHistory& 
     s["sigma_avg_at_peak_eps_mpa"] = h.stress_avg[at] / 1e6;
   }
   // Equilibrium: alpha below 0.05 (Sec. 2.4.2) for 5 consecutive samples.
-  const long eq = shpb::first_equilibrium_index(h.alpha, 0.05, 5);
+  const long eq = first_equilibrium_index(h.alpha, 0.05, 5);
   s["equilibrium_time_us"] = eq >= 0 ? nlohmann::json(h.t[eq] * 1e6) : nlohmann::json(nullptr);
-  const auto idx = waves ? shpb::equilibrium_indices(w, h, 0, n) : shpb::equilibrium_indices(h, 0, n);
+  const auto idx = waves ? equilibrium_indices(w, h, 0, n) : equilibrium_indices(h, 0, n);
   s["force_balance_fbc"] = idx.force_balance;
   s["stress_equilibrium_seqi"] = idx.stress_equilibrium;
   s["mean_alpha"] = idx.mean_alpha;
@@ -58,4 +58,4 @@ std::string format_summary(const nlohmann::json& s) {
   return out;
 }
 
-}  // namespace kolsky::app
+}  // namespace kolsky::shpb
