@@ -25,6 +25,15 @@ Handle open_dataset(hid_t loc, const std::string& name, std::vector<hsize_t>& di
   return set;
 }
 
+// Variable-length UTF-8: a resolved scene may exceed the 64 KiB compact-attribute limit, and a
+// table's text column has no common length.
+Handle utf8_string_type() {
+  Handle type(H5Tcopy(H5T_C_S1), H5Tclose, "string type");
+  check(H5Tset_size(type.get(), H5T_VARIABLE), "string type");
+  check(H5Tset_cset(type.get(), H5T_CSET_UTF8), "string type");
+  return type;
+}
+
 }  // namespace
 
 [[noreturn]] void fail(const std::string& what) {
@@ -139,11 +148,36 @@ void write_attr(hid_t obj, const std::string& name, std::int64_t v) {
   check(H5Awrite(a.get(), H5T_NATIVE_INT64, &v), "write attribute " + name);
 }
 
+void write_strings(hid_t loc, const std::string& name, const std::vector<std::string>& v) {
+  Handle type = utf8_string_type();
+  const hsize_t dims[1] = {v.size()};
+  Handle space(H5Screate_simple(1, dims, nullptr), H5Sclose, "dataspace " + name);
+  Handle set(H5Dcreate2(loc, name.c_str(), type.get(), space.get(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
+             H5Dclose, "create dataset " + name);
+  std::vector<const char*> p;
+  for (const std::string& s : v) p.push_back(s.c_str());
+  if (!v.empty()) check(H5Dwrite(set.get(), type.get(), H5S_ALL, H5S_ALL, H5P_DEFAULT, p.data()), "write dataset " + name);
+}
+
+std::vector<std::string> read_strings(hid_t loc, const std::string& name) {
+  std::vector<hsize_t> dims;
+  Handle set = open_dataset(loc, name, dims);
+  Handle ftype(H5Dget_type(set.get()), H5Tclose, "type of dataset " + name);
+  if (dims.size() != 1 || H5Tget_class(ftype.get()) != H5T_STRING || H5Tis_variable_str(ftype.get()) <= 0)
+    throw std::runtime_error("dataset " + name + " is not a list of variable-length strings");
+  Handle type = utf8_string_type();
+  std::vector<char*> p(static_cast<std::size_t>(dims[0]), nullptr);
+  if (!p.empty()) check(H5Dread(set.get(), type.get(), H5S_ALL, H5S_ALL, H5P_DEFAULT, p.data()), "read dataset " + name);
+  std::vector<std::string> v;
+  for (char* c : p) {
+    v.emplace_back(c != nullptr ? c : "");
+    H5free_memory(c);
+  }
+  return v;
+}
+
 void write_attr(hid_t obj, const std::string& name, const std::string& v) {
-  // Variable-length UTF-8: a resolved scene may exceed the 64 KiB compact-attribute limit.
-  Handle type(H5Tcopy(H5T_C_S1), H5Tclose, "string type");
-  check(H5Tset_size(type.get(), H5T_VARIABLE), "string type");
-  check(H5Tset_cset(type.get(), H5T_CSET_UTF8), "string type");
+  Handle type = utf8_string_type();
   Handle space = scalar_space();
   Handle a(H5Acreate2(obj, name.c_str(), type.get(), space.get(), H5P_DEFAULT, H5P_DEFAULT),
            H5Aclose, "create attribute " + name);

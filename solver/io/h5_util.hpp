@@ -1,5 +1,5 @@
 // Small RAII layer over the serial HDF5 C API for the checkpoint and snapshot files: groups,
-// 1-D and n x k double / int64 datasets, scalar attributes. Every failure throws
+// 1-D and n x k double / int64 datasets, 1-D string datasets, scalar attributes. Every failure throws
 // std::runtime_error with the innermost HDF5 message; callers add the file name. Shared by the
 // run files (hdf5_run.cpp), checkpoints and snapshots.
 #pragma once
@@ -55,6 +55,9 @@ void write_ints(hid_t loc, const std::string& name, const std::vector<std::int64
 /// when the shape differs.
 std::vector<double> read_doubles(hid_t loc, const std::string& name, std::size_t cols = 1);
 std::vector<std::int64_t> read_ints(hid_t loc, const std::string& name);
+/// A 1-D dataset of variable-length UTF-8 strings (a table's text column), and back.
+void write_strings(hid_t loc, const std::string& name, const std::vector<std::string>& v);
+std::vector<std::string> read_strings(hid_t loc, const std::string& name);
 
 void write_attr(hid_t obj, const std::string& name, double v);
 void write_attr(hid_t obj, const std::string& name, std::int64_t v);
