@@ -1,9 +1,10 @@
-// kolsky: command-line front of the SHPB suite. Subcommands: run, analyze, defaults.
+// kolsky: command-line front of the SHPB suite. Subcommands: run, analyze, eos, sweep, defaults.
 // Exit codes: 0 ok, 1 usage/internal error, 2 bad input (InputError), 3 numerical failure.
 #include <algorithm>
 #include <cstdio>
 #include <cstring>
 #include <exception>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -11,6 +12,7 @@
 #include "app/interrupt.hpp"
 #include "core/errors.hpp"
 #include "core/build_info.hpp"
+#include "ensemble/ensemble.hpp"
 
 namespace {
 
@@ -45,6 +47,18 @@ const char* kUsage =
     "  kolsky eos --water W [--porosity n] [-o eos.csv] [--help for more options]\n"
     "      three-phase soil EOS (Eqs. 2.1-2.9): P(eps_v) and its components P_BC, P_D, P_E;\n"
     "      W in percent of dry mass (docs/eos.md)\n"
+    "  kolsky sweep SCENE.json --set KEY=VALUES [--set ...] [--seeds K] [--threads N]\n"
+    "               [-o TABLE] [--plot DIR] [--quiet]\n"
+    "      run the scene once per member of the product of every KEY's values and the packing\n"
+    "      seeds (--seeds K: specimen.seed = 1..K). VALUES: a JSON list [a,b,...], lo:hi:count\n"
+    "      (evenly spaced, ends included), log:lo:hi:count (evenly in log), or one JSON value.\n"
+    "      Writes one row per member (the values, seed, run summary figures, steps, run time,\n"
+    "      status, error) to TABLE.csv and TABLE.h5 (default: SCENE stem + _sweep); finished\n"
+    "      members are cached in TABLE.cache/ and a rerun skips them. --threads N: members at\n"
+    "      once (default 1); under `mpirun -n K kolsky sweep ...` the members spread over the\n"
+    "      ranks. --plot DIR: each summary figure against the first KEY, seeds as scatter with\n"
+    "      mean +- sd. Every member's scene is checked first (exit 2); a failed member is a\n"
+    "      row, and the exit code is 3 when one failed numerically (docs/scene.md)\n"
     "  kolsky defaults\n"
     "      every scene and BARS.json parameter with its default, unit and description\n"
     "  kolsky --help | --version\n"
@@ -71,16 +85,20 @@ int main(int argc, char** argv) {
   const bool wants_help = std::find_if(args.begin(), args.end(), [](const std::string& a) {
                             return a == "--help" || a == "-h";
                           }) != args.end();
-  if (wants_help && (cmd == "run" || cmd == "analyze" || cmd == "defaults")) {
+  if (wants_help && (cmd == "run" || cmd == "analyze" || cmd == "sweep" || cmd == "defaults")) {
     std::fputs(kUsage, stdout);
     return 0;
   }
+  // Under mpirun a sweep spreads its members over the ranks; started alone, nothing of MPI runs.
+  std::optional<kolsky::ensemble::MpiSession> mpi;
+  if (cmd == "sweep") mpi.emplace(&argc, &argv);
   try {
     if (cmd == "run") return kolsky::app::cmd_run(args);
+    if (cmd == "sweep") return kolsky::app::cmd_sweep(args);
     if (cmd == "analyze") return kolsky::app::cmd_analyze(args);
     if (cmd == "defaults") return kolsky::app::cmd_defaults(args);
     if (cmd == "eos") return kolsky::app::cmd_eos(args);
-    std::fprintf(stderr, "kolsky: unknown command '%s' (run, analyze, defaults; see --help)\n",
+    std::fprintf(stderr, "kolsky: unknown command '%s' (run, analyze, eos, sweep, defaults; see --help)\n",
                  cmd.c_str());
     return 1;
   } catch (const kolsky::app::UsageError& e) {

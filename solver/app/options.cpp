@@ -6,6 +6,21 @@
 
 namespace kolsky::app {
 
+namespace {
+
+int whole_number(const std::string& option, const std::string& v) {
+  try {
+    size_t used = 0;
+    const int n = std::stoi(v, &used);
+    if (used != v.size() || n < 1) throw std::invalid_argument(v);
+    return n;
+  } catch (const std::exception&) {
+    throw UsageError(option + " needs a whole number >= 1, got '" + v + "'");
+  }
+}
+
+}  // namespace
+
 Options parse_options(const std::vector<std::string>& args, const std::vector<std::string>& allowed) {
   Options o;
   auto takes = [&](const std::string& a) {
@@ -34,15 +49,9 @@ Options parse_options(const std::vector<std::string>& args, const std::vector<st
           throw UsageError("--checkpoint-every needs a time in s > 0, got '" + v + "'");
         }
       }
-      else if (a == "--threads") {
-        try {
-          size_t used = 0;
-          o.threads = std::stoi(v, &used);
-          if (used != v.size() || o.threads < 1) throw std::invalid_argument(v);
-        } catch (const std::exception&) {
-          throw UsageError("--threads needs a whole number >= 1, got '" + v + "'");
-        }
-      }
+      else if (a == "--set") o.sets.push_back(v);
+      else if (a == "--threads") o.threads = whole_number(a, v);
+      else if (a == "--seeds") o.seeds = whole_number(a, v);
       continue;
     }
     o.positional.push_back(a);
