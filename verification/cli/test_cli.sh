@@ -293,6 +293,43 @@ signals)
   [ -s run.ckpt.h5 ] && [ -s run.xmf ] || fail "outputs missing: $(ls)"
   head -1 g.csv | grep -q "^# INCOMPLETE run" || fail "gauge record not marked incomplete: $(head -2 g.csv)"
   no_temp_files ;;
+sweep)
+  # kolsky sweep: listed by --help; bad input refused with exit 2 before any member runs (no
+  # table, no cache); a small sweep's table, resumed from its cache; a failed member recorded
+  # with exit 3; --plot without gnuplot refused before any work.
+  expect_exit 0 "$kolsky" --help; grep -q "kolsky sweep SCENE.json" out.txt || fail "sweep not in --help"
+  expect_exit 0 "$kolsky" sweep --help; grep -q "log:lo:hi:count" out.txt || fail "sweep --help"
+  scene s.json ""
+  expect_exit 1 "$kolsky" sweep s.json
+  expect_exit 2 "$kolsky" sweep s.json --set 'specimen.constrained_modulus=[1e8,2e8]' --set 'specimen.lenght=[0.01]' -o t.csv
+  grep -q "s.json: specimen.lenght: unknown key 'lenght'; did you mean 'length'? (sweep member " err.txt || fail "bad key message: $(cat err.txt)"
+  [ "$(wc -l < err.txt)" -eq 1 ] || fail "error is not one line: $(cat err.txt)"
+  expect_exit 2 "$kolsky" sweep s.json --set specimen.constrained_modulus=1e8:2e8:0 -o t.csv
+  grep -q "^kolsky: error: --set: specimen.constrained_modulus: a range's count" err.txt || fail "range message: $(cat err.txt)"
+  expect_exit 2 "$kolsky" sweep s.json --set specimen.constrained_modulus -o t.csv
+  grep -q "no '='" err.txt || fail "no = message: $(cat err.txt)"
+  expect_exit 2 "$kolsky" sweep s.json --set 'specimen.constrained_modulus=[]' -o t.csv
+  grep -q "no member" err.txt || fail "empty list message: $(cat err.txt)"
+  expect_exit 2 "$kolsky" sweep s.json --seeds 2 -o t.csv  # an elastic column has no packing seed
+  grep -q "s.json: specimen.seed: " err.txt || fail "seed message: $(cat err.txt)"
+  KOLSKY_GNUPLOT=$work/no_gnuplot expect_exit 2 "$kolsky" sweep s.json --set specimen.n_elements=[10,20] -o t.csv --plot p
+  grep -q "gnuplot not available" err.txt || fail "gnuplot message: $(cat err.txt)"
+  [ ! -e t.csv ] && [ ! -e t.h5 ] && [ ! -e t.cache ] || fail "bad input left outputs: $(ls)"
+  expect_exit 0 "$kolsky" sweep s.json --set specimen.constrained_modulus=1e8:3e8:3 --set 'specimen.n_elements=[10,20]' -o t.csv --threads 2
+  [ "$(wc -l < t.csv)" -eq 7 ] || fail "want a header and 6 rows: $(cat t.csv)"
+  head -1 t.csv | grep -q "^member,specimen.constrained_modulus,specimen.n_elements,.*peak_stress_back_mpa.*,run_s,status,failure_kind,error,key$" || fail "header: $(head -1 t.csv)"
+  [ "$(grep -c ',ok,,,' t.csv)" -eq 6 ] || fail "members not ok: $(cat t.csv)"
+  h5dump -d /table/peak_stress_back_mpa -H t.h5 >/dev/null || fail "HDF5 table column missing"
+  grep -q "6/6 done" err.txt || fail "no progress lines: $(cat err.txt)"; no_temp_files
+  expect_exit 0 "$kolsky" sweep s.json --set specimen.constrained_modulus=1e8:3e8:3 --set 'specimen.n_elements=[10,20]' -o t.csv
+  [ "$(grep -c 'from the cache' err.txt)" -eq 6 ] || fail "rerun did not take every member from the cache: $(cat err.txt)"
+  expect_exit 0 "$kolsky" sweep s.json --set specimen.n_elements=[10,20] -o q.csv --quiet
+  [ ! -s err.txt ] || fail "--quiet printed: $(cat err.txt)"
+  expect_exit 3 "$kolsky" sweep s.json --set 'specimen.constrained_modulus=[1e8,5e10]' --set time.dt=1.2e-6 \
+    --set time.check_stability=false --set time.end=3e-3 -o f.csv
+  grep -q ",failed,numerical,numerical failure: non-finite" f.csv || fail "failed member not recorded: $(cat f.csv)"
+  grep -q ",ok,,," f.csv || fail "the other member did not run: $(cat f.csv)"
+  no_temp_files ;;
 *) fail "unknown case" ;;
 esac
 echo "PASS [$case_name]"
