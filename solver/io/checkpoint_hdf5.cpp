@@ -3,11 +3,9 @@
 #include "io/checkpoint_hdf5.hpp"
 
 #include <array>
-#include <cstdio>
 #include <stdexcept>
 #include <utility>
 
-#include "core/atomic_file.hpp"
 #include "core/errors.hpp"
 #include "io/h5_util.hpp"
 
@@ -338,17 +336,7 @@ Checkpoint read_all(hid_t file) {
 }  // namespace
 
 void write_checkpoint_hdf5(const std::string& path, const Checkpoint& c) {
-  h5::silence();
-  const std::string tmp = temporary_name(path);
-  try {
-    Handle file = h5::create_file(tmp);
-    write_all(file.get(), c);
-    file.close("close " + tmp);
-  } catch (const std::exception& e) {
-    std::remove(tmp.c_str());
-    throw std::runtime_error("cannot write checkpoint " + path + ": " + e.what());
-  }
-  commit_file(tmp, path);
+  h5::write_file_atomic(path, "checkpoint", [&](hid_t file) { write_all(file, c); });
 }
 
 Checkpoint read_checkpoint_hdf5(const std::string& path) {

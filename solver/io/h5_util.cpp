@@ -1,8 +1,11 @@
 // See h5_util.hpp.
 #include "io/h5_util.hpp"
 
+#include <cstdio>
 #include <stdexcept>
 #include <utility>
+
+#include "core/atomic_file.hpp"
 
 namespace kolsky::io::h5 {
 
@@ -68,6 +71,20 @@ void Handle::close(const std::string& what) {
 }
 
 void silence() { H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr); }
+
+void write_file_atomic(const std::string& path, const std::string& what, const std::function<void(hid_t)>& fill) {
+  silence();
+  const std::string tmp = temporary_name(path);
+  try {
+    Handle file = create_file(tmp);
+    fill(file.get());
+    file.close("close " + tmp);
+  } catch (const std::exception& e) {
+    std::remove(tmp.c_str());
+    throw std::runtime_error("cannot write " + what + " " + path + ": " + e.what());
+  }
+  commit_file(tmp, path);  // removes tmp and names both paths if the rename fails
+}
 
 Handle create_file(const std::string& path) {
   return Handle(H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), H5Fclose,

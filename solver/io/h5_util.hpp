@@ -6,6 +6,7 @@
 #include <hdf5.h>
 
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -38,6 +39,11 @@ void check(herr_t status, const std::string& what);
 
 /// Switches off HDF5's own error printing (our exceptions carry the message).
 void silence();
+/// A new file at `path` written whole or not at all: created under a temporary sibling name,
+/// filled by `fill(file)`, closed and renamed to `path`; on any failure the temporary is removed,
+/// an existing `path` left as it was, and std::runtime_error("cannot write <what> <path>: ...")
+/// thrown.
+void write_file_atomic(const std::string& path, const std::string& what, const std::function<void(hid_t)>& fill);
 Handle create_file(const std::string& path);      ///< truncates
 Handle open_file_read(const std::string& path);
 Handle create_group(hid_t loc, const std::string& name);

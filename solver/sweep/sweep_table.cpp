@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <stdexcept>
 
 #include "core/atomic_file.hpp"
@@ -116,13 +115,9 @@ void write_table_csv(const std::string& path, const SweepTable& t) {
 
 void write_table_hdf5(const std::string& path, const SweepTable& t) {
   namespace h5 = io::h5;
-  h5::silence();
-  const std::string tmp = temporary_name(path);
-  try {
-    h5::Handle file = h5::create_file(tmp);
-    h5::Handle meta = h5::create_group(file.get(), "meta");
-    h5::write_attr(meta.get(), "meta_json", t.meta.dump());
-    h5::Handle table = h5::create_group(file.get(), "table");
+  h5::write_file_atomic(path, "the sweep table", [&](hid_t file) {
+    h5::write_attr(h5::create_group(file, "meta").get(), "meta_json", t.meta.dump());
+    const h5::Handle table = h5::create_group(file, "table");
     nlohmann::json order = nlohmann::json::array();
     for (const Column& c : t.columns) {
       order.push_back({{"name", c.name}, {"text", c.text}});
@@ -130,14 +125,7 @@ void write_table_hdf5(const std::string& path, const SweepTable& t) {
       else h5::write_doubles(table.get(), c.name, c.numbers);
     }
     h5::write_attr(table.get(), "columns", order.dump());
-    table = h5::Handle();
-    meta = h5::Handle();
-    file.close("close " + tmp);
-  } catch (const std::exception& e) {
-    std::remove(tmp.c_str());
-    throw std::runtime_error("cannot write the sweep table " + path + ": " + e.what());
-  }
-  commit_file(tmp, path);
+  });
 }
 
 SweepTable read_table_hdf5(const std::string& path) {
