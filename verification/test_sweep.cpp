@@ -104,6 +104,9 @@ TEST(Sweep, MembersAreTheProductFirstKeySlowestSeedFastest) {
             "specimen.seed");
   // Only seeds: one member per seed.
   EXPECT_EQ(sweep_points(make_plan(plan.scene_file, {}, 3)).size(), 3u);
+  // A product past 1e6 members is refused before it is built.
+  const SweepPlan huge = make_plan(plan.scene_file, {parse_axis("a=1:2:1000000"), parse_axis("b=1:2:2")}, 0);
+  EXPECT_NE(std::string(input_error([&] { sweep_points(huge); }).what()).find("2e+06 members"), std::string::npos);
 }
 
 TEST(Sweep, EveryMembersSceneIsCheckedBeforeAnyRuns) {

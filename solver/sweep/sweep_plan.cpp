@@ -114,6 +114,12 @@ SweepPlan make_plan(const std::string& scene_file, std::vector<SweepAxis> axes, 
 }
 
 std::vector<SweepPoint> sweep_points(const SweepPlan& plan) {
+  double members = plan.seeds > 0 ? plan.seeds : 1;
+  for (const SweepAxis& a : plan.axes) members *= static_cast<double>(a.values.size());
+  if (members > kMostMembers)
+    throw InputError(kOrigin, plan.axes.empty() ? std::string(kSeedKey) : plan.axes.front().key,
+                     "the sweep would have " + value_text(members) + " members, more than " +
+                         value_text(kMostMembers) + ": split it");
   std::vector<SweepPoint> out(1);
   for (const SweepAxis& a : plan.axes) {
     if (a.values.empty()) throw InputError(kOrigin, a.key, "no values: the sweep would have no member");

@@ -56,8 +56,12 @@ inline constexpr const char* kSeedKey = "specimen.seed";
 /// InputError("--set", key, ...) for a key given twice, or specimen.seed beside --seeds.
 SweepPlan make_plan(const std::string& scene_file, std::vector<SweepAxis> axes, int seeds);
 
+/// The most members a sweep may have (each is at least one run; more is a typo, e.g. a count of
+/// 1e6 in two ranges).
+inline constexpr double kMostMembers = 1e6;
+
 /// Every member, first axis slowest, seed fastest. InputError("--set", key, ...) when the
-/// product is empty.
+/// product is empty or has more than kMostMembers members.
 std::vector<SweepPoint> sweep_points(const SweepPlan& plan);
 
 /// The member's scene: the plan's scene with each axis' value (and the seed) applied.

@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cstdio>
 #include <stdexcept>
+#include <variant>
 
 #include "core/errors.hpp"
 #include "scene/scene.hpp"
@@ -34,16 +35,22 @@ nlohmann::json run_scene(const nlohmann::json& scene_json, const std::string& fi
                          const MemberOptions& o) {
   // nthreads-var is per thread: this sets the member's own team size, not its neighbours'.
   if (o.omp_threads > 0) omp_set_num_threads(o.omp_threads);
+  const auto stopped = [stop = o.stop] { return stop != nullptr && *stop != 0; };
+  if (stopped()) throw StopRequested("stopped on request before it started; it runs on a rerun");
   const auto start = std::chrono::steady_clock::now();
   nlohmann::json out;
   try {
-    const scene::Scene sc = scene::parse_scene(scene_json, file, base_dir);
+    scene::Scene sc = scene::parse_scene(scene_json, file, base_dir);
+    if (auto* dem = std::get_if<dem::DemSpecimenParams>(&sc.spec.specimen))
+      dem->packing.on_progress = [&](const dem::PackingProgress&) {  // a packing takes minutes
+        if (stopped()) throw StopRequested("stopped on request while packing; it runs on a rerun");
+      };
     shpb::SimulatedShpb sim(sc.spec);  // a DEM specimen packs here (or reads its cache)
     sim.require_analysable_end();
     shpb::RunControl control;
     control.stop = o.stop;
     const shpb::RunResult r = sim.run(nullptr, control);
-    if (o.stop != nullptr && *o.stop != 0) throw StopRequested("stopped on request; the member runs again on a rerun");
+    if (stopped()) throw StopRequested("stopped on request; it runs on a rerun");
     if (!r.complete) {
       out = failed("numerical", "numerical failure: " + r.failure);
     } else {
