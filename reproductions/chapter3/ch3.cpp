@@ -6,6 +6,8 @@
 #include <fstream>
 #include <stdexcept>
 
+#include "core/table.hpp"
+
 namespace kolsky::ch3 {
 
 namespace {
@@ -30,6 +32,19 @@ CaseResult run_case(const harness::Case& spec) {
   if (c.refusal) std::rethrow_exception(c.refusal);  // InputError: exit 2
   if (c.run.has_probe("off_axis_fraction") && !c.run.probe("off_axis_fraction").value.empty())
     c.off_axis = c.run.probe("off_axis_fraction").value.back();
+  if (c.ok && c.dem.grains > 0 && c.run.has_probe("applied_stress")) {
+    const auto scene = harness::final_scene(spec);
+    const auto impedance = [&](const char* bar) {
+      const auto& b = scene.at("bars").at(bar);
+      return std::sqrt(b.at("youngs_modulus").get<double>() * b.at("density").get<double>());
+    };
+    c.mass_per_area = scene.at("specimen").at("grain_density").get<double>() * c.dem.grain_volume / c.dem.face_area;
+    c.z_incident = impedance("incident"), c.z_transmission = impedance("transmission");
+    // The pulse is applied at the incident bar's far end from t = 0 and reaches the face one
+    // transit later (the arrival), so the face sees at faces.t = x what was applied at run time x.
+    const Table1D applied{c.run.t, c.run.probe("applied_stress").value};
+    for (double x : c.faces.t) c.incident_if.push_back(applied(x));
+  }
   if (c.ok) {
     // Energy balance (docs/coupling.md, "Energy"): what the specimen and the bars hold against
     // the work delivered at the incident bar's far end, on the face records' samples.
@@ -63,7 +78,24 @@ double window_slope(const std::vector<double>& x, const std::vector<double>& y, 
 }
 }  // namespace
 
-Measures measure(const CaseResult& c, double eps_lo, double eps_hi, double cutoff, double ringing_stress) {
+std::vector<double> face_inertia_gap(const CaseResult& c, double half_width) {
+  const auto& t = c.faces.t;
+  std::vector<double> gap(t.size(), NAN);
+  if (c.incident_if.size() != t.size() || !std::isfinite(c.mass_per_area)) return gap;
+  for (std::size_t k = 0; k < t.size(); ++k) {
+    std::size_t a = k, b = k;
+    while (a > 0 && t[k] - t[a] < half_width) --a;
+    while (b + 1 < t.size() && t[b] - t[k] < half_width) ++b;
+    if (a == k || b == k) continue;
+    const double dt = t[b] - t[a];
+    const double rate_i = (c.incident_if[b] - c.incident_if[a]) / dt, rate_f = (c.faces.front[b] - c.faces.front[a]) / dt,
+                 rate_b = (c.faces.back[b] - c.faces.back[a]) / dt;
+    gap[k] = 0.5 * c.mass_per_area * ((2 * rate_i - rate_f) / c.z_incident + rate_b / c.z_transmission);
+  }
+  return gap;
+}
+
+Measures measure(const CaseResult& c, double eps_lo, double eps_hi, double cutoff, double ringing_time) {
   Measures m;
   if (!c.ok || c.faces.back.empty()) return m;
   // The specimen's own record: the transmission-face stress (summed grain contact forces over
@@ -94,11 +126,12 @@ Measures measure(const CaseResult& c, double eps_lo, double eps_hi, double cutof
     m.slope_gauges = window_slope(c.history.strain, c.history.stress_back, g_cut < 0 ? static_cast<long>(c.history.t.size()) : g_cut + 1,
                                   eps_lo, eps_hi);
   }
-  // Fig. 3.4: front and back face stresses after the ringing time, taken here as the first
-  // time the back face carries `ringing_stress`, up to the cut-off.
-  const long j0 = first_at_least(c.faces.back, ringing_stress);
+  // Fig. 3.4: front and back face stresses after the ringing time (studies_*.json, README
+  // "The face stresses"), up to the cut-off.
+  const long j0 = first_at_least(c.faces.t, ringing_time);
   if (j0 >= 0 && m.i_end > j0) {
     m.ringing_end = c.faces.t[j0];
+    m.stress_at_ringing_end = c.faces.back[j0];
     double gap = 0, alpha = 0;
     for (long k = j0; k < m.i_end; ++k) {
       const double d = std::abs(c.faces.front[k] - c.faces.back[k]);
@@ -108,6 +141,15 @@ Measures measure(const CaseResult& c, double eps_lo, double eps_hi, double cutof
     m.face_gap_max = gap;
     m.face_alpha_max = alpha;
   }
+  // Before it: is the gap the specimen's momentum rate while the pulse still rises? Rates over
+  // +-5 us: a tenth of the 125 us rise, wide enough to average the force chains' flicker.
+  const std::vector<double> need = face_inertia_gap(c, 5e-6);
+  double top = 0, measured = 0, predicted = 0;
+  for (std::size_t k = 0; k < need.size() && c.faces.t[k] < ringing_time; ++k)
+    if (std::isfinite(need[k])) top = std::max(top, need[k]);
+  for (std::size_t k = 0; k < need.size() && c.faces.t[k] < ringing_time; ++k)
+    if (top > 0 && need[k] >= 0.5 * top) measured += c.faces.front[k] - c.faces.back[k], predicted += need[k];
+  if (predicted > 0) m.face_inertia_ratio = measured / predicted, m.face_inertia_gap_max = top;
   return m;
 }
 

@@ -19,6 +19,10 @@ namespace kolsky::ch3 {
 struct CaseResult : harness::CaseOutputs {
   std::vector<double> energy_error_if, delivered_if;  ///< held - delivered, delivered (J), on faces.t
   double off_axis = NAN;          ///< largest face lateral / axial contact resultant (coupled only)
+  // What the specimen's momentum balance needs (measure(): face_inertia_ratio).
+  double mass_per_area = NAN;     ///< kg/m^2, grain mass over the face area (rho_s (1 - n) L)
+  double z_incident = NAN, z_transmission = NAN;  ///< Pa s/m, the bars' impedances sqrt(E rho)
+  std::vector<double> incident_if;  ///< Pa, the incident pulse at the face on faces.t
 };
 
 /// Runs one case; never throws for a run that fails (ok = false, failure = why), rethrows
@@ -40,9 +44,22 @@ struct Measures {
   double face_gap_max = NAN;      ///< Pa, max |front - back| face stress after the ringing time
   double face_alpha_max = NAN;    ///< max |front - back| / mean of the two, same window
   double ringing_end = NAN;       ///< s after the arrival where the window of face_gap starts
+  double stress_at_ringing_end = NAN;  ///< Pa, back face there
+  /// Before the ringing time, the measured front - back gap over the gap the specimen's
+  /// momentum needs (face_inertia_gap), summed over the samples where that is at least half its
+  /// largest: 1 when the early gap is the inertia of the specimen accelerated by the pulse's rise.
+  double face_inertia_ratio = NAN;
+  double face_inertia_gap_max = NAN;  ///< Pa, largest predicted gap before the ringing time
 };
 Measures measure(const CaseResult& c, double eps_lo, double eps_hi, double cutoff,
-                 double ringing_stress);
+                 double ringing_time);
+
+/// The front - back face stress the specimen's momentum needs with frictionless walls and a
+/// linear velocity profile (the uniform strain SHPB assumes): v_front = (2 s_I - s_f) / Z_I,
+/// v_back = s_b / Z_T, P / A = (m / A) (v_front + v_back) / 2, so
+///   s_f - s_b = (m / 2A) (2 ds_I/dt / Z_I - ds_f/dt / Z_I + ds_b/dt / Z_T),
+/// the rates by central differences over +-half_width (smoothing the grains' force noise).
+std::vector<double> face_inertia_gap(const CaseResult& c, double half_width);
 
 /// The back-face stress-strain curve up to the cut-off, for plots and comparisons.
 harness::Curve curve_to_cutoff(const CaseResult& c, const Measures& m);

@@ -54,7 +54,7 @@ ch3::Context read_inputs(const repro::DriverArgs& args, harness::ReportInput& re
   x.studies = ch3::read_json(args.set_dir() + "/studies_" + args.scale + ".json");
   const auto& w = x.studies.at("windows");
   x.eps_lo = w.at("slope_strain")[0], x.eps_hi = w.at("slope_strain")[1];
-  x.cutoff = w.at("cutoff_stress"), x.ringing_stress = w.at("ringing_stress");
+  x.cutoff = w.at("cutoff_stress"), x.ringing_time = w.at("ringing_time");
   x.min_speedup = ch3::level_speedups(x, harness::load_targets(rep.targets_path, args.repo_root));
   return x;
 }
@@ -116,9 +116,16 @@ void measure_cases(ch3::Context& x, const std::map<std::string, Ran>& ran) {
   x.m->trend("ch3.friction_stiffer", f.m.slope > o.m.slope,
              "interface friction 0.3: " + mpa(f.m.slope) + " MPa vs frictionless " + mpa(o.m.slope) + " MPa");
   x.m->scalar("ch3.face_alpha_shifted", s.m.face_alpha_max);
-  x.m->note("ch3.face_alpha_shifted", "max |front - back| / mean face stress from back stress " + mpa(x.ringing_stress) +
-                                          " MPa (t = " + fmt("%.0f us", s.m.ringing_end * 1e6) + " after arrival) to 13 MPa; largest gap " +
-                                          mpa(s.m.face_gap_max) + " MPa");
+  x.m->note("ch3.face_alpha_shifted",
+            std::isfinite(s.m.ringing_end)
+                ? "max |front - back| / mean face stress from the ringing time, " + fmt("%.0f us", s.m.ringing_end * 1e6) +
+                      " after arrival (back face " + mpa(s.m.stress_at_ringing_end) + " MPa), to 13 MPa; largest gap " +
+                      mpa(s.m.face_gap_max) + " MPa"
+                : "no window: the back face reaches 13 MPa " + fmt("%.0f us", s.m.time_at_cutoff * 1e6) + " after arrival, before the " +
+                      fmt("%.0f us", x.ringing_time * 1e6) + " ringing time");
+  x.m->scalar("ch3.face_inertia_ratio", s.m.face_inertia_ratio);
+  x.m->note("ch3.face_inertia_ratio", "1.5 x specimen before the ringing time: measured front - back gap over the gap its momentum "
+                                          "needs (largest " + fmt("%.2f", s.m.face_inertia_gap_max / 1e6) + " MPa), where that is at least half its largest");
   // Companion of the slope known deviations (README, "The preparation study, H1"): the
   // network the original specimen starts with (full scale only: studies_full.json
   // "companions").

@@ -24,7 +24,7 @@ harness::Case make_case(const Context& x, const std::string& label, const nlohma
 }
 
 Measures measure(const Context& x, const CaseResult& c) {
-  return ch3::measure(c, x.eps_lo, x.eps_hi, x.cutoff, x.ringing_stress);
+  return ch3::measure(c, x.eps_lo, x.eps_hi, x.cutoff, x.ringing_time);
 }
 
 namespace {

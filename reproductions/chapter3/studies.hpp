@@ -20,7 +20,7 @@ struct Context {
   std::string scene_path;        ///< its file
   std::string packing_cache;     ///< folder of the packing cache, next to the report
   nlohmann::json studies;        ///< studies_<scale>.json
-  double eps_lo = 0.02, eps_hi = 0.06, cutoff = 13e6, ringing_stress = 2e6;
+  double eps_lo = 0.02, eps_hi = 0.06, cutoff = 13e6, ringing_time = 125e-6;
   harness::Measurements* m = nullptr;
   std::vector<harness::Plot>* plots = nullptr;
   std::string markdown;          ///< appended to the report preamble

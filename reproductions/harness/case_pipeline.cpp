@@ -83,6 +83,8 @@ DemFinalState dem_final_state(const dem::DemSpecimen& d) {
   double solid = 0;
   for (double r : p.radius) solid += 4.0 / 3.0 * std::numbers::pi * r * r * r;
   s.porosity = 1 - solid / (d.area() * d.length());
+  s.grain_volume = solid;
+  s.face_area = d.area();
   return s;
 }
 

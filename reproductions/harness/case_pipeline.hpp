@@ -83,6 +83,8 @@ struct DemFinalState {
   std::size_t grains = 0;
   long held_steps = 0;         ///< steps the grains were held as packed (hold_until_loaded)
   double porosity = NAN;       ///< 1 - grain volume / tube volume between the end walls
+  double grain_volume = NAN;   ///< m^3, the grains' summed volume
+  double face_area = NAN;      ///< m^2, the specimen's cross-section
 };
 
 /// A grain-size curve of the specimen at time t (Case::grain_size_curve_every).

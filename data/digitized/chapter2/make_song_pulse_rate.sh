@@ -11,15 +11,17 @@
 #   after 450 us the pulse ramps linearly to zero over 100 us.
 # t = 0 is the arrival at the specimen face; applied at the free end the same table is simply
 # delayed by L_I / c. Usage: RATE=900 make_song_pulse_rate.sh > song2009_incident_900_reconstructed.csv
+# RISE_US (default 125, the text's) moves the end of the sin^2 rise, for the Chapter 3 face-stress
+# study (scripts/study-ringing.sh); no reproduction uses another value.
 set -euo pipefail
-awk -v R="${RATE:-900}" 'BEGIN {
+awk -v R="${RATE:-900}" -v T="${RISE_US:-125}" 'BEGIN {
   pi = 3.141592653589793; rho = 8100; c = sqrt(200e9 / 8100); L = 0.0093; D = 230e6;
   dt = 1e-6; e = 0; r_prev = 0;
   print "# time_s,stress_pa  (reconstructed: see make_song_pulse_rate.sh and the .meta.json)";
   print "time_s,stress_pa";
   for (i = 0; i <= 550; i++) {
     t = i * dt; us = i;
-    if (us <= 125) r = 480 * sin(pi * us / 250) ^ 2;
+    if (us <= T) r = 480 * sin(pi * us / (2 * T)) ^ 2;
     else if (us <= 350) r = R;
     else if (us <= 450) r = 480 * cos(pi * (us - 350) / 200) ^ 2;
     else r = 0;
