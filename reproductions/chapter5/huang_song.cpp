@@ -181,9 +181,10 @@ void song_study(Study& s) {
     ss.series.push_back(p);
     harness::PlotSeries gi = series(c->spec.label + ": incident bar gauge (incident, then reflected)");
     harness::PlotSeries gt = series(c->spec.label + ": transmission bar gauge");
-    for (std::size_t k = 0; k < c->gauge_t.size(); ++k) {
-      gi.x.push_back(c->gauge_t[k] * 1e6), gi.y.push_back(c->gauge_incident[k] / 1e6);
-      gt.x.push_back(c->gauge_t[k] * 1e6), gt.y.push_back(c->gauge_transmission[k] / 1e6);
+    const harness::GaugeRecord& g = c->gauges;
+    for (std::size_t k = 0; k < g.t.size(); ++k) {
+      gi.x.push_back(g.t[k] * 1e6), gi.y.push_back(g.incident[k] / 1e6);
+      gt.x.push_back(g.t[k] * 1e6), gt.y.push_back(g.transmission[k] / 1e6);
     }
     wv.series.push_back(gi);
     wv.series.push_back(gt);
