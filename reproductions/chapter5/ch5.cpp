@@ -1,6 +1,7 @@
 #include "chapter5/ch5.hpp"
 
 #include <algorithm>
+#include <cstdio>
 #include <fstream>
 #include <stdexcept>
 
@@ -99,6 +100,18 @@ CaseResult run_case(const CaseSpec& spec, const std::string& dir, const std::str
     c.failure = e.what();
     return c;
   }
+}
+
+CaseResult CaseRunner::run(const CaseSpec& spec) const {
+  std::printf("%s: starting\n", spec.label.c_str());
+  CaseResult c = run_case(spec, dir, cache, perturb_seed);
+  if (c.ok)
+    std::printf("%s: %zu -> %zu grains, %ld steps of %.3g ns (%.3g ns at the end), %.0f s (packing %.0f s)\n",
+                spec.label.c_str(), c.grains_initial, c.grains_final, c.steps, c.dt * 1e9, c.dt_final * 1e9, c.wall_s,
+                c.pack_s);
+  else
+    std::printf("%s: FAILED: %s\n", spec.label.c_str(), c.failure.c_str());
+  return c;
 }
 
 double stress_at_strain(const CaseResult& c, double e) {

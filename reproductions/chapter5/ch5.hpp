@@ -79,6 +79,15 @@ CaseResult case_result(const CaseSpec& spec, double upscale, const harness::Case
 /// ok = false with its reason).
 CaseResult run_case(const CaseSpec& spec, const std::string& dir, const std::string& cache, unsigned perturb_seed = 0);
 
+/// Where a set's cases run from: the scenes' folder, the packing cache, the --perturb-ulp seed.
+struct CaseRunner {
+  std::string dir, cache;
+  unsigned perturb_seed = 0;
+  harness::Case make(const CaseSpec& spec) const { return make_case(spec, dir, cache, perturb_seed); }
+  /// run_case, with a line when it starts and its one-line summary when it ends.
+  CaseResult run(const CaseSpec& spec) const;
+};
+
 /// Back stress of c at strain e on its loading branch (up to its largest strain), linear
 /// between samples; NaN outside it.
 double stress_at_strain(const CaseResult& c, double e);

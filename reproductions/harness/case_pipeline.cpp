@@ -43,6 +43,12 @@ void validate(const Case& c) { scene::parse_scene(final_scene(c), c.scene_path, 
 
 std::string content_key(const Case& c) { return scene::content_key(final_scene(c)); }
 
+std::string packing_key(const Case& c) {
+  const auto sc = scene::parse_scene(final_scene(c), c.scene_path, scene_dir(c));
+  const auto* dp = std::get_if<dem::DemSpecimenParams>(&sc.spec.specimen);
+  return dp == nullptr ? "" : dem::packing_cache_key(dp->packing);
+}
+
 dem::CachedPacking pack(const Case& c) {
   const auto sc = scene::parse_scene(final_scene(c), c.scene_path, scene_dir(c));
   const auto* dp = std::get_if<dem::DemSpecimenParams>(&sc.spec.specimen);

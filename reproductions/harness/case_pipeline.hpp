@@ -73,6 +73,11 @@ std::string content_key(const Case& c);
 /// packing takes minutes). InputError for a case whose specimen is not DEM.
 dem::CachedPacking pack(const Case& c);
 
+/// The key its packing is cached under (dem::packing_cache_key): cases with the same key share
+/// one packing, which an ensemble can make once before they run. "" for a case whose specimen
+/// is not DEM; InputError for a scene the reader refuses.
+std::string packing_key(const Case& c);
+
 /// The specimen's face records (interface probes) from the incident arrival on, t = 0 there.
 struct FaceRecord {
   std::vector<double> t;       ///< s after the arrival
