@@ -95,6 +95,29 @@ TEST(Chapter5Case, EverySceneOfTheSetIsAcceptedAsChanged) {
     }
 }
 
+// The ensemble makes each packing once (chapter5/set.hpp, run_packings): cases whose packing
+// is the same must share its key, and only those.
+TEST(Chapter5Case, CasesShareAPackingKeyExactlyWhenTheyShareThePacking) {
+  const auto key = [](const CaseSpec& s) { return harness::packing_key(make_case(s, kDir, "cache")); };
+  CaseSpec base = wang(3), nobreak = wang(3), clim0 = wang(3), other_sigma = wang(3), seed2 = wang(3);
+  nobreak.breakage = false;
+  clim0.coordination_limit = 0;
+  other_sigma.sigma_lim0 = 5e9;
+  seed2.seed = 2;
+  const std::string k = key(base);
+  EXPECT_EQ(k.size(), 16u);
+  EXPECT_EQ(key(nobreak), k);
+  EXPECT_EQ(key(clim0), k);
+  EXPECT_EQ(key(other_sigma), k);
+  EXPECT_NE(key(seed2), k);
+  EXPECT_NE(key(wang(2.5)), k);
+  harness::Case elastic;
+  elastic.scene_path = std::string(KOLSKY_SOURCE_DIR) + "/data/examples/song2009_elastic.json";
+  std::ifstream f(elastic.scene_path);
+  elastic.scene = nlohmann::json::parse(f);
+  EXPECT_EQ(harness::packing_key(elastic), "");  // not a DEM specimen: nothing to pack
+}
+
 TEST(Chapter5Case, ACaseThatCannotBeReadIsAFailureNotAThrow) {
   CaseSpec s = wang(3);
   s.scene = "no_such_scene.json";
