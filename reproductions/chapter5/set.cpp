@@ -62,9 +62,11 @@ void add_case(SetEnsemble& e, const CaseRunner& r, const CaseSpec& spec, CaseRes
   } catch (const std::exception&) {  // the scene file cannot be read: its run says so
   }
   add_member(e, {spec.label, case_key(r, spec), 1, [r, spec] { return to_json(r.run(spec)); }}, modelled,
-             [into, spec](const ensemble::MemberResult& m) {
+             [into, spec, packed = &e.packing_s](const ensemble::MemberResult& m) {
                if (m.ok) {
                  *into = case_from_json(m.value);
+                 if (const auto it = packed->find(spec.label); it != packed->end())
+                   into->wall_s += it->second, into->pack_s += it->second;
                  return;
                }
                *into = CaseResult{};  // the member threw (run_case itself never does)
@@ -107,6 +109,7 @@ void run_packings(SetEnsemble& e, const CaseRunner& r) {
   std::swap(kept.members, e.members), std::swap(kept.take, e.take), std::swap(kept.cost_measured, e.cost_measured);
   std::swap(kept.planned, e.planned);
   std::set<std::string> made;
+  std::vector<std::string> owners;  // the first case of each packing
   for (const CaseSpec& spec : kept.planned) {
     harness::Case c;
     std::string key;
@@ -117,6 +120,7 @@ void run_packings(SetEnsemble& e, const CaseRunner& r) {
       continue;
     }
     if (key.empty() || !made.insert(key).second) continue;
+    owners.push_back(spec.label);
     c.label = "packing for " + spec.label;
     // Not in the results cache: a rerun finds the packing in the packing cache at once.
     add_member(e, {c.label, "", 1, [c] {
@@ -126,6 +130,7 @@ void run_packings(SetEnsemble& e, const CaseRunner& r) {
                modelled_cost(c), [](const ensemble::MemberResult&) {});
   }
   if (!e.members.empty()) run_phase(e, "packings");
+  for (std::size_t k = 0; k < owners.size(); ++k) e.packing_s[owners[k]] = e.log[e.log.size() - owners.size() + k].wall_s;
   std::swap(kept.members, e.members), std::swap(kept.take, e.take), std::swap(kept.cost_measured, e.cost_measured);
   std::swap(kept.planned, e.planned);
 }

@@ -48,6 +48,9 @@ struct SetEnsemble {
   std::vector<std::function<void(const ensemble::MemberResult&)>> take;  ///< where each result goes
   std::vector<bool> cost_measured;
   std::vector<CaseSpec> planned;  ///< the cases among the planned members (run_packings)
+  /// Case label -> seconds its packing took in the packings phase: the first planned case of
+  /// each packing pays for it (wall_s and pack_s), as it did when it packed for itself.
+  std::map<std::string, double> packing_s;
   std::vector<MemberRecord> log;  ///< every member run so far, phase by phase
 };
 
