@@ -2,15 +2,19 @@
 // are applied in order and as written, a change that cannot be applied is an InputError naming
 // its key, the content key follows the final scene and nothing else, the Chapter 3 studies'
 // merge patches give, as changes, the scenes merge_patch gives (so the port kept every value),
-// and a short run hands back its outputs by name.
+// and a short run hands back its outputs by name (probes on the history's clock, gauge
+// stresses, progress lines).
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <string>
 
 #include "core/errors.hpp"
 #include "harness/case_pipeline.hpp"
+#include "scene/scene.hpp"
 #include "test_support.hpp"
 
 namespace kolsky::harness {
@@ -160,7 +164,42 @@ TEST(HarnessCasePipeline, ARunHandsBackItsOutputsByName) {
   EXPECT_GT(out.run.steps, 0);
   EXPECT_EQ(out.dem.grains, 0u);  // not a DEM specimen
   EXPECT_GE(out.wall_s, out.run_s);
+  EXPECT_GE(out.wall_s, out.build_s);
   EXPECT_THROW(pack(c), InputError);  // nothing to pack
+
+  // The gauge stresses: -strain x E of each bar, on the run's clock.
+  ASSERT_EQ(out.gauges.t, out.run.t);
+  const auto spec = scene::parse_scene(final_scene(c), c.scene_path, scene_dir(c)).spec;
+  const auto& strain_i = out.run.probe("incident_gauge_strain").value;
+  const auto& strain_t = out.run.probe("transmission_gauge_strain").value;
+  ASSERT_EQ(out.gauges.transmission.size(), out.run.t.size());
+  for (std::size_t k = 0; k < out.run.t.size(); k += 50) {
+    EXPECT_EQ(out.gauges.incident[k], -strain_i[k] * spec.incident.material.youngs_modulus);
+    EXPECT_EQ(out.gauges.transmission[k], -strain_t[k] * spec.transmission.material.youngs_modulus);
+  }
+  EXPECT_GT(*std::max_element(out.gauges.incident.begin(), out.gauges.incident.end()), 0);  // compression positive
+  // A probe on the history's samples (t = 0 at the arrival): the run's own sample there, up to
+  // the round-off of shifting the clock by the arrival time and back.
+  const std::vector<double> back = on_history(out, "stress_back");
+  const auto& probe = out.run.probe("stress_back").value;
+  ASSERT_EQ(back.size(), out.history.t.size());
+  const double peak = std::abs(*std::max_element(probe.begin(), probe.end()));
+  for (std::size_t k = 0; k < back.size(); k += 25) {
+    const double at = out.history.t[k] + out.run.arrival_time;
+    const auto j = std::min_element(out.run.t.begin(), out.run.t.end(),
+                                    [at](double a, double b) { return std::abs(a - at) < std::abs(b - at); }) -
+                   out.run.t.begin();
+    EXPECT_NEAR(back[k], probe[j], 1e-9 * peak) << k;
+  }
+
+  // Progress lines: one per part of the run, headed by the label.
+  ::testing::internal::CaptureStdout();
+  Case talking = c;
+  talking.progress_lines = 4;
+  EXPECT_TRUE(run_case(talking).ok);
+  const std::string said = ::testing::internal::GetCapturedStdout();
+  EXPECT_NE(said.find("  short elastic: 25 % (t = "), std::string::npos) << said;
+  EXPECT_NE(said.find("  short elastic: 75 % (t = "), std::string::npos) << said;
 
   // A time.end before the arrival: the solver refuses the scene; the case says so.
   const CaseOutputs early = run_case(c.with("time.end", 1e-5, "too short"));

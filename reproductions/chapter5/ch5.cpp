@@ -1,16 +1,12 @@
 #include "chapter5/ch5.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <cstdio>
-#include <filesystem>
 #include <fstream>
 #include <stdexcept>
 
 #include "common/perturb.hpp"
-#include "harness/case_pipeline.hpp"
-#include "scene/scene.hpp"
-#include "shpb/simulation.hpp"
+#include "core/table.hpp"
 
 namespace kolsky::ch5 {
 
@@ -20,126 +16,101 @@ nlohmann::json read_json(const std::string& path) {
   return nlohmann::json::parse(f);
 }
 
-nlohmann::json case_scene(const CaseSpec& spec, const std::string& dir, const std::string& cache,
-                          unsigned perturb_seed) {
-  auto j = repro::read_scene_json(dir + "/" + spec.scene, perturb_seed);
-  auto& s = j["specimen"];
-  if (spec.upscale > 0) s["upscale"] = spec.upscale;
-  s["packing_cache"] = cache;
-  const double n = s["upscale"].get<double>();
+harness::Case make_case(const CaseSpec& spec, const std::string& dir, const std::string& cache, unsigned perturb_seed) {
+  harness::Case c;
+  c.label = spec.label;
+  c.scene_path = dir + "/" + spec.scene;
+  c.scene = repro::read_scene_json(c.scene_path, perturb_seed);
+  c.packing_cache = cache;
+  c.grain_size_curve_every = 1e-6;
+  c.progress_lines = 10;  // these runs take minutes to an hour
+  auto& ch = c.changes;
+  if (spec.upscale > 0) ch.push_back({"specimen.upscale", spec.upscale});
+  const double n = spec.upscale > 0 ? spec.upscale : c.scene.at("specimen").at("upscale").get<double>();
   if (!spec.breakage) {
-    s.erase("breakage");
+    ch.push_back({"specimen.breakage", nullptr});
     // The scenes' safety factor 1.0 is for the up-front step of the smallest possible daughter
     // (README, 'Time step'). Without breakage the step is the initial grains' own, where the
     // Rayleigh step can bind and the no-breakage specimen reaches hundreds of MPa (stiffening
     // Hertz contacts): the Chapter 4 factor 0.3 there. These runs are the cheap ones.
-    j["time"]["safety_factor"] = 0.3;
+    ch.push_back({"time.safety_factor", 0.3});
   } else {
-    auto& b = s["breakage"];
-    if (spec.sigma_lim0 > 0) b["sigma_lim0"] = spec.sigma_lim0;
-    if (spec.coordination_limit >= 0) b["coordination_limit"] = spec.coordination_limit;
+    if (spec.sigma_lim0 > 0) ch.push_back({"specimen.breakage.sigma_lim0", spec.sigma_lim0});
+    if (spec.coordination_limit >= 0) ch.push_back({"specimen.breakage.coordination_limit", spec.coordination_limit});
     // Eq. 5.16's d_min is a size of the original sand (Sec. 5.3.1: 7.5 um); the specimen's
     // fines are its upscaled image, so that downscaling by N gives the text's d_min back.
-    if (spec.fines_d_min > 0) b["fines_d_min"] = spec.fines_d_min * n;
+    if (spec.fines_d_min > 0) ch.push_back({"specimen.breakage.fines_d_min", spec.fines_d_min * n});
   }
-  if (spec.end_time > 0) j["time"]["end"] = spec.end_time;
-  if (!spec.loading_file.empty()) j["loading"]["file"] = spec.loading_file;
-  if (spec.end_at_back_stress >= 0) j["loading"]["end_at_back_stress"] = spec.end_at_back_stress;
-  if (spec.seed >= 0) s["seed"] = spec.seed;
-  for (const std::string& item : spec.sets) harness::apply_change(j, harness::parse_change(item, spec.scene), spec.scene);
-  return j;
+  if (spec.end_time > 0) ch.push_back({"time.end", spec.end_time});
+  if (!spec.loading_file.empty()) ch.push_back({"loading.file", spec.loading_file});
+  if (spec.end_at_back_stress >= 0) ch.push_back({"loading.end_at_back_stress", spec.end_at_back_stress});
+  if (spec.seed >= 0) ch.push_back({"specimen.seed", spec.seed});
+  for (const std::string& item : spec.sets) ch.push_back(harness::parse_change(item, spec.scene));
+  return c;
 }
 
-namespace {
-
-double interpolate(const std::vector<double>& x, const std::vector<double>& y, double at) {
-  if (x.empty()) return NAN;
-  if (at <= x.front()) return y.front();
-  if (at >= x.back()) return y.back();
-  const auto k = static_cast<std::size_t>(std::upper_bound(x.begin(), x.end(), at) - x.begin());
-  const double f = (at - x[k - 1]) / (x[k] - x[k - 1]);
-  return y[k - 1] + f * (y[k] - y[k - 1]);
-}
-
-}  // namespace
-
-CaseResult run_case(const CaseSpec& spec, const std::string& dir, const std::string& cache, unsigned perturb_seed) {
+CaseResult case_result(const CaseSpec& spec, double upscale, const harness::CaseOutputs& out) {
   CaseResult c;
   c.spec = spec;
-  const auto start = std::chrono::steady_clock::now();
-  try {
-    std::filesystem::create_directories(cache);
-    const auto j = case_scene(spec, dir, cache, perturb_seed);
-    c.upscale = j.at("specimen").at("upscale").get<double>();
-    const auto sc = scene::parse_scene(j, dir + "/" + spec.scene, dir);
-    shpb::SimulatedShpb sim(sc.spec);  // packs (or reads the packing cache)
-    c.pack_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    sim.require_analysable_end();
-    const double dt = sim.schedule().dt;
-    shpb::RunControl control;
-    control.snapshot_every = std::max(1L, std::lround(1e-6 / dt));  // a grain-size curve per us
-    control.grain_size_curve = [&c](long, double t, const psd::GrainSizeCurve& g) { c.curves.push_back({t, g}); };
-    // One progress line per tenth of the run: these runs take minutes to an hour.
-    struct Tenths {
-      std::string label;
-      double end;
-      int next = 1;
-    } tenths{spec.label, sc.spec.time.end_time};
-    const auto t0 = std::chrono::steady_clock::now();
-    Progress quiet(sc.spec.time.end_time, false);
-    control.progress_every = std::max(1L, sim.schedule().n_steps / 10);
-    control.progress = [&tenths, t0](long, double t) {
-      const double w = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-      std::printf("  %s: %.0f %% (t = %.1f us, %.0f s)\n", tenths.label.c_str(),
-                  100.0 * t / tenths.end, t * 1e6, w);
-    };
-    const auto r = sim.run(&quiet, control);
-    c.dt = r.dt;
-    c.dt_final = r.dt_final;
-    c.steps = r.steps;
-    c.simulated_s = r.t.empty() ? 0 : r.t.back();
-    c.arrival_time = r.arrival_time;
-    c.ended_by = r.ended_by;
-    if (!r.complete) throw std::runtime_error("run incomplete: " + r.failure);
-    const auto a = sim.analyze(r);
-    const auto& h = a.history;
-    const double t_shift = sim.direct_analysis() ? 0.0 : r.arrival_time;
-    c.t = h.t;
-    c.strain = h.strain;
-    c.stress_back = h.stress_back;
-    c.stress_avg = h.stress_avg;
-    if (r.has_probe("grain_count")) {
-      auto on_history = [&](const std::string& name) {
-        std::vector<double> out(h.t.size());
-        for (std::size_t k = 0; k < h.t.size(); ++k)
-          out[k] = interpolate(r.t, r.probe(name).value, h.t[k] + t_shift);
-        return out;
-      };
-      c.grain_count = on_history("grain_count");
-      c.broken_primary = on_history("broken_primary");
-      c.broken_secondary = on_history("broken_secondary");
-      c.relative_breakage = on_history("relative_breakage");
-      // Curves on the history's clock, as the stresses.
-      for (auto& g : c.curves) g.t -= t_shift;
-      c.grains_initial = static_cast<std::size_t>(r.probe("grain_count").value.front());
-      c.grains_final = static_cast<std::size_t>(r.probe("grain_count").value.back());
-    }
-    if (r.has_probe("incident_gauge_strain")) {
-      const double e_i = sc.spec.incident.material.youngs_modulus,
-                   e_t = sc.spec.transmission.material.youngs_modulus;
-      c.gauge_t = r.t;
-      for (double e : r.probe("incident_gauge_strain").value) c.gauge_incident.push_back(-e * e_i);
-      for (double e : r.probe("transmission_gauge_strain").value) c.gauge_transmission.push_back(-e * e_t);
-    }
-    // Grain count and coordination of the specimen at the end (also without breakage).
-    const dem::DemSpecimen* d = sim.dem_specimen();
-    if (c.grains_final == 0) c.grains_initial = c.grains_final = d->system().particles().size();
-    if (r.has_probe("coordination_number")) c.coordination_final = r.probe("coordination_number").value.back();
-    c.ok = true;
-  } catch (const std::exception& e) {
-    c.failure = e.what();
+  c.upscale = upscale;
+  c.wall_s = out.wall_s;
+  c.pack_s = out.build_s;
+  const shpb::RunResult& r = out.run;
+  c.dt = r.dt;
+  c.dt_final = r.dt_final;
+  c.steps = r.steps;
+  c.simulated_s = r.t.empty() ? 0 : r.t.back();
+  c.arrival_time = r.arrival_time;
+  c.ended_by = r.ended_by;
+  if (!out.ok || !out.analysis_failure.empty()) {
+    c.failure = !r.complete ? "run incomplete: " + out.failure : out.ok ? out.analysis_failure : out.failure;
+    return c;
   }
-  c.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const auto& h = out.history;
+  c.t = h.t;
+  c.strain = h.strain;
+  c.stress_back = h.stress_back;
+  c.stress_avg = h.stress_avg;
+  c.curves = out.curves;
+  for (auto& g : c.curves) g.t -= r.arrival_time;  // on the history's clock, as the stresses
+  if (r.has_probe("grain_count")) {
+    c.grain_count = harness::on_history(out, "grain_count");
+    c.broken_primary = harness::on_history(out, "broken_primary");
+    c.broken_secondary = harness::on_history(out, "broken_secondary");
+    c.relative_breakage = harness::on_history(out, "relative_breakage");
+    c.grains_initial = static_cast<std::size_t>(r.probe("grain_count").value.front());
+    c.grains_final = static_cast<std::size_t>(r.probe("grain_count").value.back());
+  }
+  c.gauges = out.gauges;
+  // Grain count and coordination of the specimen at the end (also without breakage).
+  if (c.grains_final == 0) c.grains_initial = c.grains_final = out.dem.grains;
+  if (r.has_probe("coordination_number")) c.coordination_final = r.probe("coordination_number").value.back();
+  c.ok = true;
+  return c;
+}
+
+CaseResult run_case(const CaseSpec& spec, const std::string& dir, const std::string& cache, unsigned perturb_seed) {
+  try {
+    const harness::Case c = make_case(spec, dir, cache, perturb_seed);
+    const double upscale = harness::final_scene(c).at("specimen").at("upscale").get<double>();
+    return case_result(spec, upscale, harness::run_case(c));
+  } catch (const std::exception& e) {  // the scene file or a change could not be read
+    CaseResult c;
+    c.spec = spec;
+    c.failure = e.what();
+    return c;
+  }
+}
+
+CaseResult CaseRunner::run(const CaseSpec& spec) const {
+  std::printf("%s: starting\n", spec.label.c_str());
+  CaseResult c = run_case(spec, dir, cache, perturb_seed);
+  if (c.ok)
+    std::printf("%s: %zu -> %zu grains, %ld steps of %.3g ns (%.3g ns at the end), %.0f s (packing %.0f s)\n",
+                spec.label.c_str(), c.grains_initial, c.grains_final, c.steps, c.dt * 1e9, c.dt_final * 1e9, c.wall_s,
+                c.pack_s);
+  else
+    std::printf("%s: FAILED: %s\n", spec.label.c_str(), c.failure.c_str());
   return c;
 }
 
@@ -168,14 +139,14 @@ CurveDifference stress_difference(const std::vector<double>& strain_a, const std
   if (strain_b.size() < 2) return d;
   // b's strain is monotonic only while loading: compare up to b's largest strain.
   const auto top = std::max_element(strain_b.begin(), strain_b.end()) - strain_b.begin();
-  const std::vector<double> xb(strain_b.begin(), strain_b.begin() + top + 1);
-  const std::vector<double> yb(stress_b.begin(), stress_b.begin() + top + 1);
+  const Table1D b_at{{strain_b.begin(), strain_b.begin() + top + 1}, {stress_b.begin(), stress_b.begin() + top + 1}};
+  const std::vector<double>& xb = b_at.x;
   double sum = 0, worst = 0;
   for (std::size_t k = 0; k < strain_a.size(); ++k) {
     if (stress_a[k] < lo || stress_a[k] > hi) continue;
     if (strain_a[k] < xb.front() || strain_a[k] > xb.back()) continue;
     if (k > 0 && strain_a[k] < strain_a[k - 1]) break;  // a unloading
-    const double e = interpolate(xb, yb, strain_a[k]) - stress_a[k];
+    const double e = b_at(strain_a[k]) - stress_a[k];
     sum += e * e;
     worst = std::max(worst, std::abs(e));
     ++d.points;
@@ -191,7 +162,7 @@ psd::GrainSizeCurve curve_at_stress(const CaseResult& c, double stress, double* 
   const long k = first_at_least(c.stress_back, stress);
   if (k < 0 || c.curves.empty()) return {};
   const double t = c.t[k];
-  const auto it = std::min_element(c.curves.begin(), c.curves.end(), [t](const CurveAt& a, const CurveAt& b) {
+  const auto it = std::min_element(c.curves.begin(), c.curves.end(), [t](const harness::CurveAt& a, const harness::CurveAt& b) {
     return std::abs(a.t - t) < std::abs(b.t - t);
   });
   if (time) *time = it->t;

@@ -1,7 +1,8 @@
 // Chapter 5 reproduction helpers: one breakage case (a scene of this folder with the driver's
-// changes: upscaling factor, sigma_lim0, coordination limit, breakage on or off), what it
-// records (stress-strain, grain counts, broken parents, B_r, grain-size curves over time), and
-// the comparisons Sec. 5.3 makes on such cases (curves at equal strain, downscaled grain-size
+// changes: upscaling factor, sigma_lim0, coordination limit, breakage on or off) as a case of
+// the one pipeline (harness/case_pipeline.hpp), what the set reads off its outputs
+// (stress-strain, grain counts, broken parents, B_r, grain-size curves over time), and the
+// comparisons Sec. 5.3 makes on such cases (curves at equal strain, downscaled grain-size
 // curves at equal stress).
 #pragma once
 #include <cmath>
@@ -10,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "harness/case_pipeline.hpp"
 #include "psd/grain_size_curve.hpp"
 
 namespace kolsky::ch5 {
@@ -23,7 +25,8 @@ std::string fmt(const char* f, A... a) {
   return s;
 }
 
-/// What a case changes in its scene (a negative / empty value keeps the scene's).
+/// What a driver says about a case: the changes of its scene (a negative / empty value keeps
+/// the scene's); make_case turns it into the pipeline's changes.
 struct CaseSpec {
   std::string label;
   std::string scene;          ///< file name in reproductions/chapter5/
@@ -40,12 +43,6 @@ struct CaseSpec {
   std::vector<std::string> sets;   ///< "dotted.key=JSON" changes (harness/case_pipeline.hpp)
 };
 
-/// One grain-size curve of the specimen (grains + fines) at time t, in the specimen's sizes.
-struct CurveAt {
-  double t = 0;
-  psd::GrainSizeCurve curve;
-};
-
 struct CaseResult {
   CaseSpec spec;
   bool ok = false;
@@ -59,22 +56,37 @@ struct CaseResult {
   std::vector<double> t, strain, stress_back, stress_avg;
   // Probes of the breakage on the same samples as t (empty without breakage).
   std::vector<double> grain_count, broken_primary, broken_secondary, relative_breakage;
-  std::vector<CurveAt> curves;  ///< every microsecond of a breakage run
-  // Bar runs only: stresses at the gauges against time from the incident bar's free end (Pa).
-  std::vector<double> gauge_t, gauge_incident, gauge_transmission;
+  std::vector<harness::CurveAt> curves;  ///< every microsecond of a breakage run, on t's clock
+  harness::GaugeRecord gauges;  ///< bar runs only: on the run's clock
   double arrival_time = 0;
   double coordination_final = NAN;  ///< grain contacts per grain at the end
   std::string ended_by;  ///< set when loading.end_at_back_stress ended the run
 };
 
-/// Runs `spec` on its scene (relative paths against `dir`), with the packing cached in
-/// `cache` (created). Prints a progress line per 10 % of the run.
+/// The pipeline's case for `spec`: the scene file `dir`/spec.scene (perturb_seed > 0 moves
+/// every float of it by one ulp first, common/perturb.hpp, for `make rebaseline`), the spec's
+/// changes, a grain-size curve every microsecond, a progress line per tenth of the run, and
+/// the packings cached in `cache`. Throws what reading the scene file throws.
+harness::Case make_case(const CaseSpec& spec, const std::string& dir, const std::string& cache,
+                        unsigned perturb_seed = 0);
+
+/// The set's record of a case from the pipeline's outputs: the history (strain-rate walls: the
+/// walls; bars: the classic analysis, t = 0 at the arrival) with the breakage probes and the
+/// curves on its clock. A run that completed but could not be analysed is a failure.
+CaseResult case_result(const CaseSpec& spec, double upscale, const harness::CaseOutputs& out);
+
+/// Runs `spec` through the pipeline (make_case, harness::run_case); never throws (a failure is
+/// ok = false with its reason).
 CaseResult run_case(const CaseSpec& spec, const std::string& dir, const std::string& cache, unsigned perturb_seed = 0);
 
-/// The scene of a case as it is run; perturb_seed > 0 moves every float of the scene file by
-/// one ulp first (common/perturb.hpp, for `make rebaseline`).
-nlohmann::json case_scene(const CaseSpec& spec, const std::string& dir, const std::string& cache,
-                          unsigned perturb_seed = 0);
+/// Where a set's cases run from: the scenes' folder, the packing cache, the --perturb-ulp seed.
+struct CaseRunner {
+  std::string dir, cache;
+  unsigned perturb_seed = 0;
+  harness::Case make(const CaseSpec& spec) const { return make_case(spec, dir, cache, perturb_seed); }
+  /// run_case, with a line when it starts and its one-line summary when it ends.
+  CaseResult run(const CaseSpec& spec) const;
+};
 
 /// Back stress of c at strain e on its loading branch (up to its largest strain), linear
 /// between samples; NaN outside it.

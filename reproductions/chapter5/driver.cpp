@@ -4,24 +4,26 @@
 // with Ciantia's Hertzian-contact breakage (docs/breakage.md); the automated back-calculation
 // of sigma_lim0(N) against Eq. 5.17, with its twin experiment; speed against error of N.
 // What runs at which scale: cases_<scale>.json; targets: targets.json / targets_smoke.json.
-// Environment: KOLSKY_CH5_STUDIES="wang,huang,song" (default all) runs a subset; the
-// targets of a study not run read "not measured"; KOLSKY_CH5_CASES=file.json replaces
-// cases_<scale>.json (the report names the file); KOLSKY_CH5_SERIAL=1 runs the studies one
-// after the other instead of side by side.
+// The cases run as an ensemble (set.hpp, docs/scale-out.md): on KOLSKY_CH5_THREADS threads
+// (default 2; KOLSKY_CH5_SERIAL=1: one), or under `mpirun -n K` on K ranks, with the same
+// values either way. Environment: KOLSKY_CH5_STUDIES="wang,huang,song" (default all) runs a
+// subset; the targets of a study not run read "not measured"; KOLSKY_CH5_CASES=file.json
+// replaces cases_<scale>.json (the report names the file); KOLSKY_CH5_RESUME=1 keeps each
+// finished member's results in <out>/ensemble_cache/ and takes them from there on a rerun of
+// the same build (a killed run resumes).
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <exception>
 #include <filesystem>
-#include <initializer_list>
 #include <string>
-#include <thread>
-#include <utility>
 
 #include "chapter5/studies.hpp"
 #include "common/driver_args.hpp"
 #include "common/report_input.hpp"
+#include "core/atomic_file.hpp"
 #include "core/errors.hpp"
+#include "ensemble/ensemble.hpp"
 #include "harness/report.hpp"
 
 using namespace kolsky;
@@ -36,9 +38,20 @@ bool wanted(const std::string& study) {
   return list.find("," + study + ",") != std::string::npos;
 }
 
+bool env_is(const char* name, const std::string& value) {
+  const char* v = std::getenv(name);
+  return v != nullptr && value == v;
+}
+
+int env_int(const char* name, int fallback) {
+  const char* v = std::getenv(name);
+  return v != nullptr && std::atoi(v) > 0 ? std::atoi(v) : fallback;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
+  ensemble::MpiSession mpi(&argc, &argv);  // under mpirun the members spread over the ranks
   std::setvbuf(stdout, nullptr, _IOLBF, 0);  // progress lines reach a log file as they happen
   const auto args = repro::parse_driver_args(argc, argv, "chapter5");
   const auto start = std::chrono::steady_clock::now();
@@ -67,59 +80,32 @@ int main(int argc, char** argv) {
   }
   s.targets = &targets;
   s.full_targets = &full_targets;
-  // Two parts side by side: Wang (the N pair, the variants and the back-calculations: about
-  // half the cost) on this thread, Huang then Song on a second. Each part measures into its own
-  // copy; they are merged in the fixed order Wang, Huang, Song, so the report does not depend
-  // on which finished first. Each DEM step picks one or two OpenMP threads by its own timing
-  // (dem/thread_governor: one while the other core is busy), and results do not depend on the
-  // thread count (docs/dem.md), so every value is the serial run's.
-  struct Part {
-    ch5::Study s;
-    harness::Measurements m;
-    std::vector<harness::Plot> plots;
-    std::exception_ptr error;
-  };
-  Part wang{s, {}, {}, nullptr}, others{s, {}, {}, nullptr};
-  for (Part* p : {&wang, &others}) p->s.m = &p->m, p->s.plots = &p->plots;
-  using StudyFn = void (*)(ch5::Study&);
-  const auto run_part = [](Part& p, std::initializer_list<std::pair<const char*, StudyFn>> studies) {
-    try {
-      for (const auto& [name, study] : studies)
-        if (wanted(name)) study(p.s);
-    } catch (...) {
-      p.error = std::current_exception();
-    }
-  };
-  const auto run_wang = [&] { run_part(wang, {{"wang", ch5::wang_study}}); };
-  const auto run_others = [&] { run_part(others, {{"huang", ch5::huang_study}, {"song", ch5::song_study}}); };
-  const char* serial = std::getenv("KOLSKY_CH5_SERIAL");
-  if (serial && std::string(serial) == "1") {
-    run_wang();
-    run_others();
-  } else {
-    std::thread second(run_others);
-    run_wang();
-    second.join();
+  s.m = &rep.m;
+  s.plots = &rep.plots;
+  // The ensemble: members on threads, or on the ranks under mpirun; the scheduler's expected
+  // costs from the last run's members.json in this folder where it has them.
+  ch5::SetEnsemble e;
+  e.options.threads = env_is("KOLSKY_CH5_SERIAL", "1") ? 1 : env_int("KOLSKY_CH5_THREADS", 2);
+  if (env_is("KOLSKY_CH5_RESUME", "1")) e.options.cache_dir = rep.out_dir + "/ensemble_cache";
+  const std::string members_path = rep.out_dir + "/members.json";
+  e.costs = ch5::read_costs(members_path);
+  const ensemble::RankLayout ranks = ensemble::rank_layout();
+  const std::string where = ranks.size > 1 ? fmt("%d MPI ranks", ranks.size) : fmt("%d thread(s)", e.options.threads);
+  try {
+    if (!ch5::run_studies(s, e, wanted)) return 0;  // a rank other than 0: rank 0 reports
+  } catch (const std::exception& ex) {
+    std::fprintf(stderr, "reproduce_chapter5: %s\n", ex.what());
+    return 1;
   }
-  for (Part* p : {&wang, &others}) {
-    try {
-      if (p->error) std::rethrow_exception(p->error);
-    } catch (const std::exception& e) {
-      std::fprintf(stderr, "reproduce_chapter5: %s\n", e.what());
-      return 1;
-    }
-    rep.m.merge(p->m);
-    rep.plots.insert(rep.plots.end(), p->plots.begin(), p->plots.end());
-    s.markdown += p->s.markdown;
-  }
+  write_file_atomic(members_path, ch5::members_json(e.log).dump(1) + "\n");
   rep.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   rep.preamble_markdown = fmt("Scale **%s** (%s), %.0f s on %s. Inputs the text shows only as figures are "
                               "reconstructions (data/digitized/chapter5/, each with its .meta.json); the initial grain counts "
                               "are what the grain-size curves were fitted to, so they are reported here, not scored.\n\n",
                               args.scale.c_str(), cases_name.c_str(), rep.wall_time_s,
-                              std::getenv("OMP_NUM_THREADS") ? (std::string(std::getenv("OMP_NUM_THREADS")) + " thread(s)").c_str()
-                                                             : "the default threads") +
-                          s.markdown;
+                              (where + ", OpenMP " + (std::getenv("OMP_NUM_THREADS") ? std::getenv("OMP_NUM_THREADS") : "default") +
+                               " thread(s) each").c_str()) +
+                          s.markdown + ch5::members_markdown(e.log, where);
   const int failed = harness::write_report(rep);
   std::printf("chapter5: %d expected target(s) failed; report in %s\n", failed, rep.out_dir.c_str());
   return failed == 0 ? 0 : 1;

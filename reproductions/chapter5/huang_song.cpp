@@ -21,19 +21,7 @@ double Study::threshold(const std::string& id, const std::string& key) const {
   return harness::threshold(targets->find(id) != nullptr ? *targets : *full_targets, id, key);
 }
 
-CaseResult Study::run(const CaseSpec& spec) const {
-  std::printf("%s: starting\n", spec.label.c_str());
-  CaseResult c = run_case(spec, dir, cache, perturb_seed);
-  if (c.ok)
-    std::printf("%s: %zu -> %zu grains, %ld steps of %.3g ns (%.3g ns at the end), %.0f s (packing %.0f s)\n",
-                spec.label.c_str(), c.grains_initial, c.grains_final, c.steps, c.dt * 1e9, c.dt_final * 1e9, c.wall_s,
-                c.pack_s);
-  else
-    std::printf("%s: FAILED: %s\n", spec.label.c_str(), c.failure.c_str());
-  return c;
-}
-
-void huang_study(Study& s) {
+CaseSpec huang_plan(const Study& s) {
   const auto& h = s.cases.at("huang");
   CaseSpec spec;
   spec.scene = "scene_huang.json";
@@ -43,7 +31,11 @@ void huang_study(Study& s) {
   spec.sigma_lim0 = s.printed("ch5.huang.sigma_lim0") * spec.upscale / s.printed("ch5.huang.upscale");
   spec.end_time = h.at("end_time").get<double>();
   spec.fines_d_min = s.printed("ch5.huang.fines_d_min");
-  const CaseResult c = s.run(spec);
+  return spec;
+}
+
+void huang_measure(Study& s, const CaseResult& c) {
+  const CaseSpec& spec = c.spec;
   auto& m = *s.m;
   std::string md = "## Huang et al. (2013): strain-rate walls, 10 x 37.2 mm, frictionless walls, 700/s\n\n";
   if (!c.ok) {
@@ -123,12 +115,13 @@ void huang_study(Study& s) {
   s.markdown += md + "\n";
 }
 
-void song_study(Study& s) {
+SongPlan song_plan(const Study& s) {
   const auto& g = s.cases.at("song");
+  SongPlan p;
   // The pass rules' numbers (targets files), read before any run so that a missing one fails fast.
-  const double same_rms_frac = s.threshold("ch5.song.same_below_10", "max_rms_fraction_of_onset");
-  const double softer_k = s.threshold("ch5.song.breakage_softer_above_10", "min_samples");
-  const double softer_mean = s.threshold("ch5.song.breakage_softer_above_10", "max_mean_relative_difference");
+  p.same_rms_frac = s.threshold("ch5.song.same_below_10", "max_rms_fraction_of_onset");
+  p.softer_k = s.threshold("ch5.song.breakage_softer_above_10", "min_samples");
+  p.softer_mean = s.threshold("ch5.song.breakage_softer_above_10", "max_mean_relative_difference");
   CaseSpec spec;
   spec.scene = "scene_song.json";
   spec.upscale = g.at("n").get<double>();
@@ -136,10 +129,15 @@ void song_study(Study& s) {
   spec.end_time = g.at("end_time").get<double>();
   spec.fines_d_min = s.printed("ch5.wang.fines_d_min");
   spec.label = fmt("Song N = %g, breakage", spec.upscale);
-  const CaseResult brk = s.run(spec);
+  p.breakage = spec;
   spec.breakage = false;
   spec.label = fmt("Song N = %g, no breakage", spec.upscale);
-  const CaseResult nob = s.run(spec);
+  p.no_breakage = spec;
+  return p;
+}
+
+void song_measure(Study& s, const SongPlan& plan, const CaseResult& brk, const CaseResult& nob) {
+  const double same_rms_frac = plan.same_rms_frac, softer_k = plan.softer_k, softer_mean = plan.softer_mean;
   auto& m = *s.m;
   std::string md = "## Song et al. (2009): full sphere-chain SHPB, porosity 0.45, 480/s\n\n";
   for (const auto* c : {&brk, &nob})
@@ -181,9 +179,10 @@ void song_study(Study& s) {
     ss.series.push_back(p);
     harness::PlotSeries gi = series(c->spec.label + ": incident bar gauge (incident, then reflected)");
     harness::PlotSeries gt = series(c->spec.label + ": transmission bar gauge");
-    for (std::size_t k = 0; k < c->gauge_t.size(); ++k) {
-      gi.x.push_back(c->gauge_t[k] * 1e6), gi.y.push_back(c->gauge_incident[k] / 1e6);
-      gt.x.push_back(c->gauge_t[k] * 1e6), gt.y.push_back(c->gauge_transmission[k] / 1e6);
+    const harness::GaugeRecord& g = c->gauges;
+    for (std::size_t k = 0; k < g.t.size(); ++k) {
+      gi.x.push_back(g.t[k] * 1e6), gi.y.push_back(g.incident[k] / 1e6);
+      gt.x.push_back(g.t[k] * 1e6), gt.y.push_back(g.transmission[k] / 1e6);
     }
     wv.series.push_back(gi);
     wv.series.push_back(gt);

@@ -4,7 +4,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <future>
 #include <utility>
 
 #include "chapter5/backcalc.hpp"
@@ -43,92 +42,17 @@ std::string case_row(const CaseResult& c) {
 
 }  // namespace
 
-void wang_study(Study& s) {
-  const auto& w = s.cases.at("wang");
-  const double n_ref = w.at("n_reference").get<double>(), n_pair = w.at("n_pair").get<double>();
-  const double sig1 = s.printed("ch5.wang.sigma_lim0_n1"), sig15 = s.printed("ch5.wang.sigma_lim0_n1_5");
-  const double d_min = s.printed("ch5.wang.fines_d_min");
-  const double end = w.at("end_time").get<double>();
-  // The pass rules' numbers (targets files), read before any run so that a missing one fails fast.
-  const double pair_low_rms = s.threshold("ch5.wang.pair_coincide_low", "max_rms_pa");
-  const double pair_high_frac = s.threshold("ch5.wang.pair_close_high", "max_rms_fraction_of_top");
-  const double variants_rms = s.threshold("ch5.wang.variants_coincide_low", "max_rms_pa");
-  const double nobreak_ratio = s.threshold("ch5.wang.nobreak_stiffer_high", "min_stress_ratio");
-  const double clim0_ratio = s.threshold("ch5.wang.clim0_much_softer", "max_stress_ratio");
-  const double clim0_breaks = s.threshold("ch5.wang.clim0_breaks_more", "min_broken_ratio");
-  // The text's sigma_lim0 at N = 1 and 1.5. In general the reference N carries Eq. 5.17's value
-  // sigma(1) N and the pair Eq. 5.17 times the text's own departure from it, 2.37 / 2.295:
-  // exactly the text's two values at N = 1 and 1.5.
-  const double sig_ref = sig1 * n_ref, sig_pair = sig_ref * (n_pair / n_ref) * sig15 / (1.5 * sig1);
-  // Loaded until a stress (issue 31, H2; README "H2 and H3"): with "load_until" in the cases
-  // file the runs hold the peak rate and end once the back stress reaches it (the text compares
-  // the pair at 72 MPa), within until_end_time; the variants of Fig. 5.8 keep the scene's history.
-  const bool until = w.contains("load_until");
-  auto spec = [&](const std::string& label, double n, double sigma) {
-    CaseSpec c;
-    c.label = label;
-    c.scene = "scene_wang.json";
-    c.upscale = n;
-    c.sigma_lim0 = sigma;
-    c.end_time = end;
-    c.fines_d_min = d_min;
-    if (until) {
-      const auto& u = w.at("load_until");
-      c.loading_file = u.at("loading_file").get<std::string>();
-      c.end_at_back_stress = u.at("back_stress").get<double>();
-      c.end_time = u.at("end_time").get<double>();
-    }
-    return c;
-  };
-  auto with_scene_history = [&](CaseSpec c) {  // Fig. 5.8's comparison at equal strain
-    c.loading_file.clear();
-    c.end_at_back_stress = -1;
-    c.end_time = end;
-    return c;
-  };
-  const CaseResult ref = s.run(spec(fmt("Wang N = %g", n_ref), n_ref, sig_ref));
-  // Back-calculation (Sec. 5.3.4) against the reference curve, at each backcalc_n.
-  const int cap = w.at("backcalc_max_evaluations").get<int>();
-  const auto backcalc_at = [&](double n) {
-    BackCalcSettings bc;
-    bc.guess = sig_ref * n / n_ref;
-    bc.factor = w.at("backcalc_bracket_factor").get<double>();
-    bc.max_evaluations = cap;
-    bc.stress_lo = 1e6;
-    auto run = [&, n](double sigma) { return s.run(spec(fmt("Wang N = %g (back-calculation)", n), n, sigma)); };
-    return std::make_pair(bc, back_calculate(run, ref, bc));
-  };
-  const CaseResult pair = s.run(spec(fmt("Wang N = %g", n_pair), n_pair, sig_pair));
-  // The first N's back-calculation (at full scale N = 1.5: up to ten runs of about two
-  // minutes, the set's longest chain) needs only the reference, so it starts now on a thread of
-  // its own, beside the twin and the variants; the other N follow on this thread. It starts
-  // after the pair, which packs (and caches) the N = 1.5 specimen it uses. Measurements are
-  // recorded here, in the same order, after it is joined.
-  const auto& backcalc_n = w.at("backcalc_n");
-  std::future<std::pair<BackCalcSettings, BackCalcResult>> first_backcalc;
-  if (ref.ok && !backcalc_n.empty())
-    first_backcalc = std::async(std::launch::async, backcalc_at, backcalc_n.front().get<double>());
+void wang_measure(Study& s, const WangPlan& p, const WangRuns& runs) {
+  const double n_ref = p.n_ref, n_pair = p.n_pair, sig1 = p.sig1, sig15 = p.sig15, sig_ref = p.sig_ref;
+  const CaseResult &ref = runs.ref, &pair = runs.pair;
   auto& m = *s.m;
-  // Twin experiment of the back-calculation first: the pair's own curve, made with a known
-  // sigma_lim0, must be recovered from a start guess_factor away (the objective is 0 there:
-  // the runs are deterministic), before the procedure is trusted against another N.
-  // The twin runs at twin_n (default: the pair's N, whose run is then the synthetic curve).
-  const double n_twin = w.value("twin_n", n_pair);
-  const bool twin_is_pair = std::abs(n_twin - n_pair) < 1e-12;
-  const double sig_twin = twin_is_pair ? sig_pair : sig_ref * n_twin / n_ref;
-  const CaseResult twin_ref = twin_is_pair ? CaseResult{} : s.run(spec(fmt("twin N = %g (synthetic curve)", n_twin), n_twin, sig_twin));
-  const CaseResult& truth = twin_is_pair ? pair : twin_ref;
-  if (truth.ok && w.contains("twin_guess_factor")) {
-    BackCalcSettings bc;
-    bc.guess = sig_twin * w.at("twin_guess_factor").get<double>();
-    bc.factor = w.at("backcalc_bracket_factor").get<double>();
-    bc.max_evaluations = w.at("backcalc_max_evaluations").get<int>();
-    auto run = [&](double sigma) { return s.run(spec(fmt("twin N = %g", n_twin), n_twin, sigma)); };
-    const auto r = back_calculate(run, truth, bc);
-    m.scalar("ch5.backcalc.twin_recovered", r.sigma / sig_twin);
+  if (runs.twin_ran) {  // the twin experiment: its synthetic curve's sigma_lim0 recovered
+    const BackCalcResult& r = runs.twin;
+    m.scalar("ch5.backcalc.twin_recovered", r.sigma / p.sig_twin);
     m.note("ch5.backcalc.twin_recovered", fmt("N = %g: truth %.4g GPa, start %.4g GPa, recovered %.4g GPa (bracket %.4g-%.4g) "
-                                              "in %zu runs; %s", n_twin, sig_twin / 1e9, bc.guess / 1e9, r.sigma / 1e9,
-                                              r.bracket_lo / 1e9, r.bracket_hi / 1e9, r.evaluated.size(), r.note.c_str()));
+                                              "in %zu runs; %s", p.n_twin, p.sig_twin / 1e9, p.twin.settings.guess / 1e9,
+                                              r.sigma / 1e9, r.bracket_lo / 1e9, r.bracket_hi / 1e9, r.evaluated.size(),
+                                              r.note.c_str()));
   }
   const double to1 = std::pow(n_ref, 3), to15 = std::pow(n_pair / 1.5, 3);  // counts scale as N^-3
   std::string md = "## Wang et al. (2018): strain-rate walls, 5 x 15 mm, porosity 0.41\n\n";
@@ -151,14 +75,14 @@ void wang_study(Study& s) {
     m.scalar("ch5.wang.growth_ratio_same", g_pair / g_ref);
     m.note("ch5.wang.growth_ratio_same", fmt("growth %.3f (N = %g) / %.3f (N = %g)", g_pair, n_pair, g_ref, n_ref));
     const auto low = stress_difference(ref.strain, ref.stress_back, pair.strain, pair.stress_back, 1e6, 20e6);
-    m.trend("ch5.wang.pair_coincide_low", low.rms <= pair_low_rms,
+    m.trend("ch5.wang.pair_coincide_low", low.rms <= p.pair_low_rms,
             fmt("RMS %.2f MPa (largest %.2f) over back stress 1-20 MPa, %d points; <= %g MPa", low.rms / 1e6, low.max / 1e6, low.points,
-                pair_low_rms / 1e6));
+                p.pair_low_rms / 1e6));
     const double top = max_of(ref.stress_back);
     const auto high = stress_difference(ref.strain, ref.stress_back, pair.strain, pair.stress_back, 20e6, top);
-    m.trend("ch5.wang.pair_close_high", high.rms <= pair_high_frac * top,
+    m.trend("ch5.wang.pair_close_high", high.rms <= p.pair_high_frac * top,
             fmt("RMS %.2f MPa over back stress 20-%.0f MPa (%d points); <= %g %% of %.0f MPa", high.rms / 1e6, top / 1e6,
-                high.points, 100 * pair_high_frac, top / 1e6));
+                high.points, 100 * p.pair_high_frac, top / 1e6));
     harness::Plot psd = figure("wang_psd.png", "Wang: grain-size curves, N = " + fmt("%g", n_ref) + " and N = " + fmt("%g", n_pair) +
                                           " downscaled (Fig. 5.7)", "diameter (mm, original sand)", "percent passing");
     psd.logx = true;
@@ -187,45 +111,31 @@ void wang_study(Study& s) {
   s.plots->push_back(ss);
 
   // The breakage-criterion variants (Fig. 5.8), at the same sigma_lim0, at variants_n.
-  const double nv = w.at("variants_n").get<double>();
-  const CaseResult& same_n = std::abs(nv - n_pair) < 1e-12 ? pair : ref;
-  const double sig_v = same_n.spec.sigma_lim0;
-  // Loaded until a stress, the pair ran another history: the variants' base reruns the scene's.
-  const CaseResult base_rerun =
-      until ? s.run(with_scene_history(spec(fmt("Wang N = %g, c_lim = 8 (Fig. 5.8 history)", nv), nv, sig_v))) : CaseResult{};
-  const CaseResult& base = until ? base_rerun : same_n;
-  auto nb_spec = with_scene_history(spec(fmt("Wang N = %g, no breakage", nv), nv, sig_v));
-  nb_spec.breakage = false;
-  auto c0_spec = with_scene_history(spec(fmt("Wang N = %g, c_lim = 0", nv), nv, sig_v));
-  c0_spec.coordination_limit = 0;
-  const CaseResult nobreak = s.run(nb_spec), clim0 = s.run(c0_spec);
+  const double nv = p.nv, sig_v = p.sig_v;
+  const CaseResult &base = runs.base(p), &nobreak = runs.nobreak, &clim0 = runs.clim0;
   md += case_row(nobreak) + case_row(clim0) + "\n";
   if (base.ok && nobreak.ok && clim0.ok) {
     const auto a = stress_difference(base.strain, base.stress_back, nobreak.strain, nobreak.stress_back, 1e6, 10e6);
     const auto b = stress_difference(base.strain, base.stress_back, clim0.strain, clim0.stress_back, 1e6, 10e6);
-    m.trend("ch5.wang.variants_coincide_low", a.rms <= variants_rms && b.rms <= variants_rms,
+    m.trend("ch5.wang.variants_coincide_low", a.rms <= p.variants_rms && b.rms <= p.variants_rms,
             fmt("RMS from c_lim = 8 over back stress 1-10 MPa: no breakage %.2f MPa, c_lim = 0 %.2f MPa; <= %g MPa", a.rms / 1e6, b.rms / 1e6,
-                variants_rms / 1e6));
+                p.variants_rms / 1e6));
     // At the largest strain all three reach (high stress).
     const double e = std::min({max_of(base.strain), max_of(nobreak.strain), max_of(clim0.strain)}) * 0.98;
     const double sb = stress_at_strain(base, e), sn = stress_at_strain(nobreak, e), sc = stress_at_strain(clim0, e);
-    m.trend("ch5.wang.nobreak_stiffer_high", sn > nobreak_ratio * sb,
+    m.trend("ch5.wang.nobreak_stiffer_high", sn > p.nobreak_ratio * sb,
             fmt("at strain %.3f: no breakage %.1f MPa, c_lim = 8 %.1f MPa (> %g %% higher)", e, sn / 1e6, sb / 1e6,
-                100 * (nobreak_ratio - 1)));
-    m.trend("ch5.wang.clim0_much_softer", sc < clim0_ratio * sb,
-            fmt("at strain %.3f: c_lim = 0 %.1f MPa, c_lim = 8 %.1f MPa (< %g %%)", e, sc / 1e6, sb / 1e6, 100 * clim0_ratio));
+                100 * (p.nobreak_ratio - 1)));
+    m.trend("ch5.wang.clim0_much_softer", sc < p.clim0_ratio * sb,
+            fmt("at strain %.3f: c_lim = 0 %.1f MPa, c_lim = 8 %.1f MPa (< %g %%)", e, sc / 1e6, sb / 1e6, 100 * p.clim0_ratio));
     const double kb = base.broken_primary.back() + base.broken_secondary.back();
     const double k0 = clim0.broken_primary.back() + clim0.broken_secondary.back();
-    m.trend("ch5.wang.clim0_breaks_more", k0 > clim0_breaks * kb,
+    m.trend("ch5.wang.clim0_breaks_more", k0 > p.clim0_breaks * kb,
             fmt("broken parents at the end: c_lim = 0 %.0f, c_lim = 8 %.0f (> %gx); grain contacts per grain at the end %.2f "
-                "(c_lim = 8) and %.2f (c_lim = 0)", k0, kb, clim0_breaks, base.coordination_final, clim0.coordination_final));
+                "(c_lim = 8) and %.2f (c_lim = 0)", k0, kb, p.clim0_breaks, base.coordination_final, clim0.coordination_final));
   }
   // The companions of the known deviations (issue 31): full scale only (cases "companions").
-  if (w.contains("companions") && ref.ok && base.ok && nobreak.ok && clim0.ok) {
-    auto ref_nobreak = with_scene_history(spec(fmt("Wang N = %g, no breakage", n_ref), n_ref, sig_ref));
-    ref_nobreak.breakage = false;
-    wang_companions(s, {spec(fmt("Wang N = %g", n_pair), n_pair, sig_pair), ref_nobreak, &nobreak, &base, &clim0}, md);
-  }
+  if (p.has_companions && ref.ok && base.ok && nobreak.ok && clim0.ok) wang_companions(s, p, runs, md);
   harness::Plot vs = figure("wang_variants.png", fmt("Wang N = %g: breakage criteria at sigma_lim0 %.3g GPa (Fig. 5.8)", nv, sig_v / 1e9),
                    "strain (Eq. 5.1)", "stress (MPa)");
   for (const auto* c : {&base, &nobreak, &clim0})
@@ -239,21 +149,16 @@ void wang_study(Study& s) {
   }
   md += "### sigma_lim0 back-calculated against N = " + fmt("%g", n_ref) + " (Sec. 5.3.4, Fig. 5.16)\n\n";
   md += "| N | Eq. 5.17 | back-calculated | / Eq. 5.17 | bracket | RMS stress difference | runs |\n|---|---|---|---|---|---|---|\n";
-  // The other N first, while the first N's chain is still running; then join it.
-  std::vector<std::pair<BackCalcSettings, BackCalcResult>> backcalcs(backcalc_n.size());
-  for (std::size_t k = 1; k < backcalc_n.size(); ++k) backcalcs[k] = backcalc_at(backcalc_n[k].get<double>());
-  if (first_backcalc.valid()) backcalcs[0] = first_backcalc.get();
   std::vector<double> bn, bs;
-  std::vector<CaseResult> best;
-  for (std::size_t k = 0; k < backcalc_n.size(); ++k) {
-    const double n = backcalc_n[k].get<double>();
-    const auto& [bc, r] = backcalcs[k];
+  for (std::size_t k = 0; k < p.backcalcs.size(); ++k) {
+    const double n = p.backcalcs[k].n;
+    const BackCalcSettings& bc = p.backcalcs[k].settings;
+    const BackCalcResult& r = runs.backcalcs[k];
     md += fmt("| %g | %.3f GPa | %.3f GPa | %.3f | %.3f-%.3f GPa%s | %.2f MPa | %zu |\n", n, bc.guess / 1e9, r.sigma / 1e9,
               r.sigma / bc.guess, r.bracket_lo / 1e9, r.bracket_hi / 1e9, r.converged ? "" : " (not converged)", r.score / 1e6,
               r.evaluated.size());
     bn.push_back(n);
     bs.push_back(r.sigma);
-    best.push_back(r.best);
     if (bn.size() == 1) {
       m.scalar("ch5.backcalc.ratio_to_eq517_pair", r.sigma / bc.guess);
       m.note("ch5.backcalc.ratio_to_eq517_pair", fmt("N = %g: %.3f GPa against Eq. 5.17's %.3f GPa (text's 2.37 / 2.295 = 1.033); %s",
@@ -278,14 +183,11 @@ void wang_study(Study& s) {
   // Speed against error: every N with its back-calculated sigma (Eq. 5.17's where none), its
   // cost with and without the packing, and the seed scatter of its error over the packing
   // seeds of speed_seeds (each packs afresh, so its wall time holds a true packing's cost).
-  // Seeds only from speed_seeds_from_n up: at N = 1.5 two more packings and runs cost ~7 min
-  // of the two cores, past the set's time budget (README, "Speed against error").
-  const std::vector<long> seeds = w.value("speed_seeds", std::vector<long>{});
-  const double seeds_from_n = w.value("speed_seeds_from_n", 0.0);
+  const bool seeds = s.cases.at("wang").contains("speed_seeds") && !s.cases.at("wang").at("speed_seeds").empty();
   md += "\n### Speed against error of N (Wang specimen; reference N = " + fmt("%g", n_ref) + ")\n\n";
   md += fmt("Cost per simulated us without the packing (run) and with it (the longest packing time among the seeds: "
             "a packing read from the cache takes under a second); the stress RMS over packing seed 1%s.\n\n",
-            seeds.empty() ? "" : " and the seeds of speed_seeds (mean +- sample standard deviation)");
+            !seeds ? "" : " and the seeds of speed_seeds (mean +- sample standard deviation)");
   md += "| N | sigma_lim0 | grains start -> end | run per simulated us | with packing | stress RMS vs ref | seeds | PSD RMS at 43 MPa |\n"
         "|---|---|---|---|---|---|---|---|\n";
   harness::Plot se = figure("speed_vs_error.png", "Wang: cost against deviation from N = " + fmt("%g", n_ref) +
@@ -294,23 +196,14 @@ void wang_study(Study& s) {
   se.logx = se.logy = true;
   harness::PlotPoints run_only{"run (packing excluded), each point labelled with its N", {}, {}, {}, {}};
   harness::PlotPoints packed{"the same run with a fresh packing", {}, {}, {}, {}};
-  for (const auto& jn : w.at("speed_n")) {
-    const double n = jn.get<double>();
-    const bool is_ref = std::abs(n - n_ref) < 1e-12;
-    CaseResult c;
-    if (is_ref) c = ref;
-    else {
-      auto it = std::find_if(best.begin(), best.end(), [n](const CaseResult& b) { return std::abs(b.upscale - n) < 1e-12; });
-      c = it != best.end() && it->ok ? *it : s.run(spec(fmt("Wang N = %g (Eq. 5.17)", n), n, sig_ref * n / n_ref));
-    }
-    if (!c.ok) continue;
-    std::vector<CaseResult> members{c};
-    if (!is_ref && n >= seeds_from_n)
-      for (long seed : seeds) {
-        auto sp = spec(fmt("Wang N = %g (seed %ld)", n, seed), n, c.spec.sigma_lim0);
-        sp.seed = seed;
-        if (CaseResult r = s.run(sp); r.ok) members.push_back(std::move(r));
-      }
+  for (std::size_t i = 0; i < p.speed.size(); ++i) {
+    const double n = p.speed[i].n;
+    const bool is_ref = p.speed[i].is_ref;
+    // The case (its back-calculation's best run, or the run at Eq. 5.17's sigma_lim0), then its
+    // seeds that ran (wang_plan.cpp, speed_runs).
+    const std::vector<CaseResult>& members = runs.speed[i];
+    if (members.empty() || !members.front().ok) continue;
+    const CaseResult& c = members.front();
     // The packing's cost: the largest packing time among the members (the extra seeds pack
     // afresh; seed 1's packing may have been read from the cache in under a second).
     std::vector<double> rms, run_cost;

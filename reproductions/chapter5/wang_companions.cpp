@@ -16,7 +16,7 @@
 
 namespace kolsky::ch5 {
 
-void wang_companions(Study& s, const WangCompanionCases& c, std::string& md) {
+void wang_companions(Study& s, const WangPlan& p, const WangRuns& runs, std::string& md) {
   auto& m = *s.m;
   const auto& w = s.cases.at("wang");
   const auto& spec = w.at("companions");
@@ -26,11 +26,8 @@ void wang_companions(Study& s, const WangCompanionCases& c, std::string& md) {
   // B_r read at the first sample with the text's final count, scaled from N = 1.5 by N^-3.
   {
     const auto& e = spec.at("end_count");
-    CaseSpec sp = c.pair_until;
-    sp.label = fmt("Wang N = %g, loaded on to the text's final count", sp.upscale);
-    sp.end_at_back_stress = e.at("back_stress").get<double>();
-    sp.end_time = e.at("end_time").get<double>();
-    const CaseResult r = s.run(sp);
+    const CaseSpec& sp = p.end_count;
+    const CaseResult& r = runs.end_count;
     const double count = e.at("count").get<double>() * std::pow(1.5 / sp.upscale, 3);
     const char* id = "ch5.wang.relative_breakage_at_end_count";
     const long k = r.ok ? first_at_least(r.grain_count, count) : -1;
@@ -57,20 +54,20 @@ void wang_companions(Study& s, const WangCompanionCases& c, std::string& md) {
   {
     const char* id = "ch5.wang.pair_coincide_low_nobreak";
     const double lo = spec.at("nobreak_low").at(0).get<double>(), hi = spec.at("nobreak_low").at(1).get<double>();
-    CaseSpec sp = c.ref_nobreak;
-    const CaseResult r = s.run(sp);
-    if (r.ok && c.pair_nobreak->ok) {
-      const auto d = stress_difference(r.strain, r.stress_back, c.pair_nobreak->strain, c.pair_nobreak->stress_back, lo, hi);
+    const CaseResult& r = runs.ref_nobreak;
+    const CaseResult& pair_nobreak = runs.nobreak;
+    if (r.ok && pair_nobreak.ok) {
+      const auto d = stress_difference(r.strain, r.stress_back, pair_nobreak.strain, pair_nobreak.stress_back, lo, hi);
       const double rule = s.threshold(id, "max_rms_pa");
       m.trend(id, d.rms <= rule,
               fmt("without breakage, N = %g against N = %g: RMS %.2f MPa (largest %.2f) over back stress %.0f-%.0f MPa, %d "
-                  "points; <= %g MPa", r.upscale, c.pair_nobreak->upscale, d.rms / 1e6, d.max / 1e6, lo / 1e6, hi / 1e6,
+                  "points; <= %g MPa", r.upscale, pair_nobreak.upscale, d.rms / 1e6, d.max / 1e6, lo / 1e6, hi / 1e6,
                   d.points, rule / 1e6));
       md += fmt("- Without breakage, N = %g against N = %g over back stress %.0f-%.0f MPa: RMS %.2f MPa (with breakage the "
                 "target's pair is compared over the same window); %.0f s.\n",
-                r.upscale, c.pair_nobreak->upscale, lo / 1e6, hi / 1e6, d.rms / 1e6, r.wall_s);
+                r.upscale, pair_nobreak.upscale, lo / 1e6, hi / 1e6, d.rms / 1e6, r.wall_s);
     } else {
-      m.note(id, "a run failed: " + (r.ok ? c.pair_nobreak->failure : r.failure));
+      m.note(id, "a run failed: " + (r.ok ? pair_nobreak.failure : r.failure));
     }
   }
 
@@ -78,7 +75,7 @@ void wang_companions(Study& s, const WangCompanionCases& c, std::string& md) {
   // the first companion of clim0_breaks_more and failed (ratio 1.40 <= 2, README): recorded
   // without a target. Then the two companions of the explanation that held on a second seed.
   {
-    const CaseResult &base = *c.clim8, &clim0 = *c.clim0;
+    const CaseResult &base = runs.base(p), &clim0 = runs.clim0;
     if (base.ok && clim0.ok) {
       const double low = spec.at("low_stress_fraction").get<double>() *
                          std::min(max_of(base.stress_back), max_of(clim0.stress_back));

@@ -8,6 +8,7 @@
 #include <variant>
 
 #include "core/errors.hpp"
+#include "core/table.hpp"
 #include "scene/scene.hpp"
 #include "shpb/simulation.hpp"
 
@@ -42,6 +43,12 @@ void validate(const Case& c) { scene::parse_scene(final_scene(c), c.scene_path, 
 
 std::string content_key(const Case& c) { return scene::content_key(final_scene(c)); }
 
+std::string packing_key(const Case& c) {
+  const auto sc = scene::parse_scene(final_scene(c), c.scene_path, scene_dir(c));
+  const auto* dp = std::get_if<dem::DemSpecimenParams>(&sc.spec.specimen);
+  return dp == nullptr ? "" : dem::packing_cache_key(dp->packing);
+}
+
 dem::CachedPacking pack(const Case& c) {
   const auto sc = scene::parse_scene(final_scene(c), c.scene_path, scene_dir(c));
   const auto* dp = std::get_if<dem::DemSpecimenParams>(&sc.spec.specimen);
@@ -73,6 +80,13 @@ std::vector<double> from_arrival(const shpb::RunResult& run, const std::string& 
   return out;
 }
 
+std::vector<double> on_history(const CaseOutputs& out, const std::string& probe) {
+  const Table1D on_run{out.run.t, out.run.probe(probe).value};
+  std::vector<double> v(out.history.t.size());
+  for (std::size_t k = 0; k < v.size(); ++k) v[k] = on_run(out.history.t[k] + out.run.arrival_time);
+  return v;
+}
+
 namespace {
 
 DemFinalState dem_final_state(const dem::DemSpecimen& d) {
@@ -88,18 +102,44 @@ DemFinalState dem_final_state(const dem::DemSpecimen& d) {
   return s;
 }
 
+GaugeRecord gauge_record(const shpb::RunResult& run, const shpb::ExperimentSpec& spec) {
+  GaugeRecord g;
+  if (!run.has_probe("incident_gauge_strain")) return g;
+  const double e_i = spec.incident.material.youngs_modulus, e_t = spec.transmission.material.youngs_modulus;
+  g.t = run.t;
+  for (double e : run.probe("incident_gauge_strain").value) g.incident.push_back(-e * e_i);
+  for (double e : run.probe("transmission_gauge_strain").value) g.transmission.push_back(-e * e_t);
+  return g;
+}
+
+/// Case::progress_lines: a line per part of the run, with the wall time since `run_start`.
+void add_progress(const Case& c, const shpb::SimulatedShpb& sim, double end_time,
+                  const std::chrono::steady_clock::time_point& run_start, shpb::RunControl& control) {
+  if (c.progress_lines <= 0) return;
+  control.progress_every = std::max(1L, sim.schedule().n_steps / c.progress_lines);
+  control.progress = [label = c.label, end_time, &run_start](long, double t) {
+    std::printf("  %s: %.0f %% (t = %.1f us, %.0f s)\n", label.c_str(), 100.0 * t / end_time, t * 1e6,
+                seconds_since(run_start));
+  };
+}
+
 /// The run and what is read off it; throws what the solver throws.
-void build_and_run(const Case& c, const scene::Scene& sc, CaseOutputs& out) {
+void build_and_run(const Case& c, const scene::Scene& sc, std::chrono::steady_clock::time_point start,
+                   CaseOutputs& out) {
   shpb::SimulatedShpb sim(sc.spec);  // a DEM specimen packs here (or reads its cache)
+  out.build_s = seconds_since(start);
   sim.require_analysable_end();
   shpb::RunControl control;
   if (c.grain_size_curve_every > 0) {
     control.snapshot_every = std::max(1L, std::lround(c.grain_size_curve_every / sim.schedule().dt));
     control.grain_size_curve = [&out](long, double t, const psd::GrainSizeCurve& g) { out.curves.push_back({t, g}); };
   }
-  const auto run_start = std::chrono::steady_clock::now();
+  std::chrono::steady_clock::time_point run_start;  // the progress lines read it when they print
+  add_progress(c, sim, sc.spec.time.end_time, run_start, control);
+  run_start = std::chrono::steady_clock::now();
   out.run = sim.run(nullptr, control);
   out.run_s = seconds_since(run_start);
+  out.gauges = gauge_record(out.run, sc.spec);
   if (const dem::DemSpecimen* d = sim.dem_specimen()) out.dem = dem_final_state(*d);
   if (!out.run.complete) {
     out.failure = out.run.failure;
@@ -127,7 +167,7 @@ CaseOutputs run_case(const Case& c) {
   try {
     out.content_key = content_key(c);
     const auto sc = scene::parse_scene(final_scene(c), c.scene_path, scene_dir(c));
-    build_and_run(c, sc, out);
+    build_and_run(c, sc, start, out);
   } catch (const InputError& e) {
     out.failure = e.what();
     out.refusal = std::current_exception();

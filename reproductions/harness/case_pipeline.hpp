@@ -44,6 +44,9 @@ struct Case {
   std::string packing_cache;   ///< specimen.packing_cache (made absolute); "" keeps the scene's
   /// Seconds between grain-size curves of a specimen whose grains break (0: none).
   double grain_size_curve_every = 0;
+  /// Progress lines on stdout, headed by the label: one per 1/progress_lines of the run (0:
+  /// none), for runs of minutes to an hour.
+  int progress_lines = 0;
 
   /// This case with one more change (the studies' variants of a set's case).
   Case with(const std::string& key, const nlohmann::json& value, const std::string& new_label) const;
@@ -70,6 +73,11 @@ std::string content_key(const Case& c);
 /// packing takes minutes). InputError for a case whose specimen is not DEM.
 dem::CachedPacking pack(const Case& c);
 
+/// The key its packing is cached under (dem::packing_cache_key): cases with the same key share
+/// one packing, which an ensemble can make once before they run. "" for a case whose specimen
+/// is not DEM; InputError for a scene the reader refuses.
+std::string packing_key(const Case& c);
+
 /// The specimen's face records (interface probes) from the incident arrival on, t = 0 there.
 struct FaceRecord {
   std::vector<double> t;       ///< s after the arrival
@@ -93,6 +101,12 @@ struct CurveAt {
   psd::GrainSizeCurve curve;
 };
 
+/// The stresses at the bar gauges (1-D bars with gauges), on the run's clock (from the start
+/// of loading at the incident bar's far end): -strain x the bar's E, Pa (compression positive).
+struct GaugeRecord {
+  std::vector<double> t, incident, transmission;
+};
+
 struct CaseOutputs {
   std::string label;
   std::string content_key;
@@ -107,7 +121,9 @@ struct CaseOutputs {
   FaceRecord faces;            ///< filled for a completed run
   DemFinalState dem;
   std::vector<CurveAt> curves; ///< on the run's clock
+  GaugeRecord gauges;          ///< filled when the run has gauge probes
   double wall_s = 0;           ///< the whole case: scene, packing (or its cache), run, analysis
+  double build_s = 0;          ///< its part up to the built simulation: scene, packing (or its cache)
   double run_s = 0;            ///< the time loop alone
 };
 
@@ -117,5 +133,9 @@ CaseOutputs run_case(const Case& c);
 
 /// The values of `probe` at the samples of the face record (t >= arrival).
 std::vector<double> from_arrival(const shpb::RunResult& run, const std::string& probe);
+
+/// The values of `probe` at the samples of the analysis (history.t, t = 0 at the incident
+/// arrival), linear between the run's samples and held at its ends.
+std::vector<double> on_history(const CaseOutputs& out, const std::string& probe);
 
 }  // namespace kolsky::harness
