@@ -74,11 +74,7 @@ EditMap DemSystem::edit(const ParticleEdit& e) {
   // Energies are booked against evaluated forces (as begin_step would evaluate them first).
   if (!forces_valid_) compute_forces(0.0);
   const DemEnergy before = energy();
-  bool contacts_change = false;
-  for (std::size_t k = 0; k < pairs_.size() && !contacts_change; ++k)
-    contacts_change = pair_out_.active[k] && (old_to_new[pairs_.i[k]] < 0 || old_to_new[pairs_.j[k]] < 0);
-  for (std::size_t c = 0; c < wall_particle_.size() && !contacts_change; ++c)
-    contacts_change = wall_out_.active[c] && old_to_new[wall_particle_[c]] < 0;
+  bool contacts_change = touches_removed(net_, old_to_new);
 
   std::vector<int> survivors;  // new index k <- old survivors[k]
   survivors.reserve(n_kept);
@@ -90,18 +86,10 @@ EditMap DemSystem::edit(const ParticleEdit& e) {
   dissipated_.resize(n_new, 0.0);
 
   // Owner blocks: survivors stay in theirs (emptied blocks vanish), added grains in new ones.
-  std::vector<int> blocks{0};
-  for (std::size_t b = 0; b + 1 < block_first_.size(); ++b) {
-    int kept = 0;
-    for (int i = block_first_[b]; i < block_first_[b + 1]; ++i) kept += old_to_new[i] >= 0 ? 1 : 0;
-    if (kept > 0) blocks.push_back(blocks.back() + kept);
-  }
-  for (std::size_t a = 0; a < e.added.size(); a += static_cast<std::size_t>(opt_.owner_block))
-    blocks.push_back(static_cast<int>(n_kept + std::min(e.added.size(), a + opt_.owner_block)));
-  block_first_.swap(blocks);
+  carry_owner_blocks(net_, old_to_new, n_kept, e.added.size(), opt_.owner_block);
 
   p_ = compacted(std::move(p_), survivors, e.added);
-  remap_contacts(old_to_new, n_new);
+  remap(net_, old_to_new, n_new, walls_.size());
   skin_ = opt_.skin_over_min_radius * *std::min_element(p_.radius.begin(), p_.radius.end());
   stable_dt_ = compute_stable_dt();
   if (!contacts_change) contacts_change = added_grains_touch(n_kept);
@@ -124,88 +112,6 @@ EditMap DemSystem::edit(const ParticleEdit& e) {
     for (int& q : map.added_at) q = sorted[static_cast<std::size_t>(q)];
   }
   return map;
-}
-
-void DemSystem::remap_contacts(const std::vector<int>& old_to_new, std::size_t n_new) {
-  // Pairs: both grains kept. A monotone map keeps (i, j) sorted; a general one may flip a pair,
-  // whose history (of j relative to i) then changes sign, and needs a sort.
-  struct Carried {
-    int i, j;
-    Vec3 history;
-    unsigned char active;
-    double elastic;
-  };
-  std::vector<Carried> kept;
-  kept.reserve(pairs_.size());
-  const bool have_outputs = pair_out_.active.size() == pairs_.size();
-  for (std::size_t k = 0; k < pairs_.size(); ++k) {
-    const int a = old_to_new[pairs_.i[k]], b = old_to_new[pairs_.j[k]];
-    if (a < 0 || b < 0) continue;
-    const unsigned char act = have_outputs ? pair_out_.active[k] : 0;
-    const double el = have_outputs ? pair_out_.elastic[k] : 0.0;
-    if (a < b) kept.push_back({a, b, pairs_.history[k], act, el});
-    else kept.push_back({b, a, -pairs_.history[k], act, el});
-  }
-  auto pair_less = [](const Carried& x, const Carried& y) { return x.i != y.i ? x.i < y.i : x.j < y.j; };
-  if (!std::is_sorted(kept.begin(), kept.end(), pair_less)) std::sort(kept.begin(), kept.end(), pair_less);
-  PairList list;
-  list.first.assign(n_new + 1, 0);
-  pair_out_.resize(kept.size(), 0);  // slots: sized by the coming rebuild
-  for (std::size_t k = 0; k < kept.size(); ++k) {
-    ++list.first[static_cast<std::size_t>(kept[k].i) + 1];
-    list.i.push_back(kept[k].i);
-    list.j.push_back(kept[k].j);
-    list.history.push_back(kept[k].history);
-    pair_out_.active[k] = kept[k].active;
-    pair_out_.elastic[k] = kept[k].elastic;
-  }
-  for (std::size_t q = 0; q < n_new; ++q) list.first[q + 1] += list.first[q];
-  pairs_ = std::move(list);
-
-  // Wall contacts: per wall slot, sorted by (new) particle.
-  const auto n_slots = walls_.size();  // by slot (WallSlots)
-  if (wall_first_.size() == n_slots + 1) {
-    struct WallEntry {
-      int particle;
-      Vec3 history;
-      ContactOut out;
-      unsigned char active;
-      double normal, elastic_normal;
-    };
-    std::vector<int> particle, first{0};
-    std::vector<Vec3> history;
-    std::vector<ContactOut> out;
-    std::vector<unsigned char> active;
-    std::vector<double> normal, elastic_normal;
-    for (std::size_t w = 0; w < n_slots; ++w) {
-      std::vector<WallEntry> slot;
-      for (int c = wall_first_[w]; c < wall_first_[w + 1]; ++c) {
-        const int q = old_to_new[wall_particle_[c]];
-        if (q >= 0) slot.push_back({q, wall_history_[c], wall_out_.out[c], wall_out_.active[c], wall_normal_[c],
-                                 wall_elastic_normal_[c]});
-      }
-      std::stable_sort(slot.begin(), slot.end(), [](const WallEntry& x, const WallEntry& y) { return x.particle < y.particle; });
-      for (const WallEntry& c : slot) {
-        particle.push_back(c.particle);
-        history.push_back(c.history);
-        out.push_back(c.out);
-        active.push_back(c.active);
-        normal.push_back(c.normal);
-        elastic_normal.push_back(c.elastic_normal);
-      }
-      first.push_back(static_cast<int>(particle.size()));
-    }
-    wall_particle_.swap(particle);
-    wall_first_.swap(first);
-    wall_history_.swap(history);
-    wall_out_.out.swap(out);
-    wall_out_.active.swap(active);
-    wall_out_.elastic.assign(wall_particle_.size(), 0.0);  // pairs only; kept sized
-    wall_normal_.swap(normal);
-    wall_elastic_normal_.swap(elastic_normal);
-  }
-  list_valid_ = false;  // slots, gather lists and x_at_build_ are rebuilt from the carried lists
-  max_disp2_ = 0;
 }
 
 bool DemSystem::added_grains_touch(std::size_t first_added) const {
@@ -234,8 +140,8 @@ std::vector<int> DemSystem::resort_for_locality() {
   for (std::size_t k = 0; k < order.size(); ++k) old_to_new[static_cast<std::size_t>(order[k])] = static_cast<int>(k);
   p_.permute(order);
   dissipated_ = gathered(dissipated_, order);
-  remap_contacts(old_to_new, p_.size());
-  reset_owner_blocks();
+  remap(net_, old_to_new, p_.size(), walls_.size());
+  net_.block_first = uniform_owner_blocks(p_.size(), opt_.owner_block);
   added_since_sort_ = 0;
   ++n_resorts_;
   return old_to_new;

@@ -15,12 +15,13 @@ namespace kolsky::dem {
 
 DemSystem::PairArrays DemSystem::pair_arrays() {
   const int n = static_cast<int>(p_.size());
-  return {pairs_.first.data(), pairs_.i.data(), pairs_.j.data(), pair_slot_.data(),
+  ContactNetwork& c = net_;
+  return {c.pairs.first.data(), c.pairs.i.data(), c.pairs.j.data(), c.pair_slot.data(),
           p_.material.data(), p_.x.data(), p_.v.data(), p_.omega.data(), p_.radius.data(),
-          p_.mass.data(), pairs_.history.data(), p_.f.data(), p_.torque.data(),
-          dissipated_.data(), pair_out_.elastic.data(), pair_out_.out.data(),
-          pair_out_.active.data(), block_first_.data(), n,
-          static_cast<int>(block_first_.size()) - 1};
+          p_.mass.data(), c.pairs.history.data(), p_.f.data(), p_.torque.data(),
+          dissipated_.data(), c.pair_out.elastic.data(), c.pair_out.out.data(),
+          c.pair_out.active.data(), c.block_first.data(), n,
+          static_cast<int>(c.block_first.size()) - 1};
 }
 
 template <class Law>
@@ -111,27 +112,27 @@ ContactResult wall_contact(const WallPair& pair, double overlap, const Vec3& n,
 // overlap -gap is bitwise the one the kernel has always used (wall.hpp says why).
 template <class Law, class Shape>
 void DemSystem::wall_forces(const Law& law, const Shape& shape, int slot, double dt) {
-  const auto c0 = static_cast<std::ptrdiff_t>(wall_first_[slot]);
-  const auto c1 = static_cast<std::ptrdiff_t>(wall_first_[slot + 1]);
-  ContactStore& out = wall_out_;
+  const auto c0 = static_cast<std::ptrdiff_t>(net_.wall_first[slot]);
+  const auto c1 = static_cast<std::ptrdiff_t>(net_.wall_first[slot + 1]);
+  ContactStore& out = net_.wall_out;
 #pragma omp for schedule(dynamic, kWallChunk) nowait
   for (std::ptrdiff_t c = c0; c < c1; ++c) {
-    const int i = wall_particle_[c];
+    const int i = net_.wall_particle[c];
     const Vec3& x = p_.x[i];
     const double r = p_.radius[i];
     const double overlap = -gap_at(shape, x, r);
     if (overlap <= 0) {
       out.active[c] = 0;
-      wall_history_[c] = Vec3{};
+      net_.wall_history[c] = Vec3{};
       continue;
     }
     Vec3 torque;
     const ContactResult res =
         wall_contact(law.pair(p_.material[i]), overlap, normal_at(shape, x), velocity_at(shape, x),
-                     contact_radius_at(shape, x, r), r, p_.mass[i], p_.v[i], p_.omega[i], wall_history_[c], dt, torque);
+                     contact_radius_at(shape, x, r), r, p_.mass[i], p_.v[i], p_.omega[i], net_.wall_history[c], dt, torque);
     out.out[c] = {res.force, torque, res.dissipated, res.elastic_energy};
-    wall_normal_[c] = res.normal_force;
-    wall_elastic_normal_[c] = res.elastic_normal_force;
+    net_.wall_normal[c] = res.normal_force;
+    net_.wall_elastic_normal[c] = res.elastic_normal_force;
     out.active[c] = 1;
   }
 }
@@ -140,11 +141,11 @@ void DemSystem::gather() {
   // Adds to each particle what pair_forces stored for it as a partner of an owner in another
   // block (contiguous slots, pair order), then its wall contacts, in list order.
   const auto n = static_cast<std::ptrdiff_t>(p_.size());
-  const int* pfirst = partner_first_.data();
-  const int* wfirst = wall_first_of_.data();
-  const int* wentry = wall_entry_.data();
-  const ContactStore& po = pair_out_;
-  const ContactStore& wo = wall_out_;
+  const int* pfirst = net_.partner_first.data();
+  const int* wfirst = net_.wall_first_of.data();
+  const int* wentry = net_.wall_entry.data();
+  const ContactStore& po = net_.pair_out;
+  const ContactStore& wo = net_.wall_out;
   Vec3* f = p_.f.data();
   Vec3* tq = p_.torque.data();
   double* diss = dissipated_.data();
@@ -174,7 +175,7 @@ void DemSystem::gather() {
 
 void DemSystem::compute_forces(double dt) {
   if (particles_changed_) refresh_after_edit();
-  if (needs_rebuild()) rebuild();
+  if (needs_rebuild(net_, skin_, walls_)) rebuild();
   const auto* hm = std::get_if<HertzMindlin>(&law_);
   const bool batched = hm && opt_.batched_hertz_mindlin;
   const std::vector<HertzMindlinConstants> table =
@@ -204,8 +205,8 @@ void DemSystem::compute_forces(double dt) {
   // by the trapezoid rule over the plane's displacement since the last evaluation.
   for (int w = 0; w < static_cast<int>(walls_.size()); ++w) {
     double sum = 0;
-    for (int c = wall_first_[w]; c < wall_first_[w + 1]; ++c)
-      if (wall_out_.active[c]) sum += wall_normal_[c];
+    for (int c = net_.wall_first[w]; c < net_.wall_first[w + 1]; ++c)
+      if (net_.wall_out.active[c]) sum += net_.wall_normal[c];
     record_force(walls_[w], sum);
   }
   forces_valid_ = true;

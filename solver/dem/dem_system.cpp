@@ -26,12 +26,6 @@ double RollingRetardation::factor(double dt) const {
   return std::pow(factor_per_reference_step, dt / reference_dt);
 }
 
-void DemSystem::ContactStore::resize(std::size_t n, std::size_t n_slots) {
-  out.assign(n_slots, ContactOut{});
-  active.assign(n, 0);
-  elastic.assign(n, 0.0);
-}
-
 DemSystem::DemSystem(Particles particles, std::vector<Material> materials, ContactLaw law,
                      DemOptions options)
     : p_(std::move(particles)), materials_(std::move(materials)), law_(std::move(law)),
@@ -59,15 +53,8 @@ DemSystem::DemSystem(Particles particles, std::vector<Material> materials, Conta
     throw InputError("", "dem.rolling.reference_dt", "must be > 0");
   skin_ = opt_.skin_over_min_radius * *std::min_element(p_.radius.begin(), p_.radius.end());
   dissipated_.assign(p_.size(), 0.0);
-  reset_owner_blocks();
+  net_.block_first = uniform_owner_blocks(p_.size(), opt_.owner_block);
   stable_dt_ = compute_stable_dt();
-}
-
-void DemSystem::reset_owner_blocks() {
-  const int n = static_cast<int>(p_.size()), block = opt_.owner_block;
-  block_first_.clear();
-  for (int i0 = 0; i0 < n; i0 += block) block_first_.push_back(i0);
-  block_first_.push_back(n);
 }
 
 // A new plane goes in at the end of the planes, before the cylinders (the slot rule); the
@@ -75,18 +62,16 @@ void DemSystem::reset_owner_blocks() {
 int DemSystem::add_plane(const PlaneWall& w) {
   walls_.insert(walls_.begin() + n_planes_, make_wall(w));
   ++n_planes_;
-  wall_particle_.clear();
-  wall_first_.clear();
-  list_valid_ = forces_valid_ = false;
+  forget_wall_contacts(net_);
+  net_.valid = forces_valid_ = false;
   stable_dt_ = compute_stable_dt();
   return n_planes_ - 1;
 }
 
 int DemSystem::add_cylinder(const CylinderWall& w) {
   walls_.push_back(make_wall(w));
-  wall_particle_.clear();
-  wall_first_.clear();
-  list_valid_ = forces_valid_ = false;
+  forget_wall_contacts(net_);
+  net_.valid = forces_valid_ = false;
   stable_dt_ = compute_stable_dt();
   return n_cylinders() - 1;
 }
@@ -111,7 +96,7 @@ void DemSystem::drive_cylinder(int cylinder, WallProfile profile) {
 }
 
 Particles& DemSystem::mutable_particles() {
-  list_valid_ = forces_valid_ = false;
+  net_.valid = forces_valid_ = false;
   particles_changed_ = true;
   return p_;
 }
@@ -121,10 +106,7 @@ void DemSystem::refresh_after_edit() {
   validate(p_, materials_.size());
   skin_ = opt_.skin_over_min_radius * *std::min_element(p_.radius.begin(), p_.radius.end());
   dissipated_.resize(p_.size(), 0.0);
-  if (pairs_.first.size() != p_.size() + 1) pairs_ = PairList{};
-  if (block_first_.back() != static_cast<int>(p_.size())) reset_owner_blocks();
-  wall_particle_.clear();
-  wall_first_.clear();
+  reset_for_particles(net_, p_.size(), opt_.owner_block);
   stable_dt_ = compute_stable_dt();
   particles_changed_ = false;
 }
@@ -234,7 +216,7 @@ void DemSystem::finish_step() {
 // The grains by the integrator (integrator.hpp), then the walls: a compliant ring's half
 // kick, then each wall's drift (wall.hpp; the walls do not interact, so one pass does both).
 void DemSystem::kick_drift(double h, double dt) {
-  max_disp2_ = dem::kick_drift(p_, h, dt, list_valid_ ? x_at_build_.data() : nullptr, max_disp2_);
+  net_.max_disp2 = dem::kick_drift(p_, h, dt, net_.valid ? net_.x_at_build.data() : nullptr, net_.max_disp2);
   for (Wall& w : walls_) {
     kick(w, h);
     drift(w, time_, dt);
@@ -247,86 +229,15 @@ void DemSystem::kick_retard(double h, double dt) {
   for (Wall& w : walls_) kick(w, h);
 }
 
-bool DemSystem::needs_rebuild() const {
-  if (!list_valid_) return true;
-  const double half = 0.5 * skin_;
-  if (max_disp2_ > half * half) return true;
-  return std::any_of(walls_.begin(), walls_.end(), [half](const Wall& w) { return moved_since_build(w) > half; });
-}
-
 void DemSystem::rebuild() {
-  pairs_ = build_pair_list(p_.x, p_.radius, skin_, pairs_);
-  build_wall_candidates();
-  const int n = static_cast<int>(p_.size());
-  // Counting sort into slots, by partner (then pair order), of the pairs whose partner lies in
-  // another owner block; a partner in the owner's block gets its side in the sweep (slot -1).
-  partner_first_.assign(static_cast<std::size_t>(n) + 1, 0);
-  std::vector<int> block_of(static_cast<std::size_t>(n));
-  for (std::size_t b = 0; b + 1 < block_first_.size(); ++b)
-    std::fill(block_of.begin() + block_first_[b], block_of.begin() + block_first_[b + 1], static_cast<int>(b));
-  auto crosses = [&](std::size_t k) { return block_of[pairs_.i[k]] != block_of[pairs_.j[k]]; };
-  for (std::size_t k = 0; k < pairs_.size(); ++k)
-    if (crosses(k)) ++partner_first_[pairs_.j[k] + 1];
-  for (int q = 0; q < n; ++q) partner_first_[q + 1] += partner_first_[q];
-  pair_slot_.resize(pairs_.size());
-  std::vector<int> fill(partner_first_.begin(), partner_first_.end() - 1);
-  for (std::size_t k = 0; k < pairs_.size(); ++k)
-    pair_slot_[k] = crosses(k) ? fill[pairs_.j[k]]++ : -1;
-  pair_out_.resize(pairs_.size(), static_cast<std::size_t>(partner_first_[n]));
-  // A carried non-zero history counts as active: the batched sweep clears the history of a
-  // pair only when it goes from active to not touching (dem_forces_batched.cpp). The slots
-  // stay zero; every evaluation rewrites active[] before anything reads it.
-  for (std::size_t k = 0; k < pairs_.size(); ++k) {
-    const Vec3& h = pairs_.history[k];
-    pair_out_.active[k] = h.x != 0 || h.y != 0 || h.z != 0;
-  }
-  wall_first_of_.assign(static_cast<std::size_t>(n) + 1, 0);
-  for (int q : wall_particle_) ++wall_first_of_[q + 1];
-  for (int q = 0; q < n; ++q) wall_first_of_[q + 1] += wall_first_of_[q];
-  wall_entry_.resize(wall_particle_.size());
-  fill.assign(wall_first_of_.begin(), wall_first_of_.end() - 1);
-  for (std::size_t c = 0; c < wall_particle_.size(); ++c)
-    wall_entry_[fill[wall_particle_[c]]++] = static_cast<int>(c);
-  x_at_build_ = p_.x;
-  max_disp2_ = 0;
+  dem::rebuild(net_, p_, walls_, skin_);
   for (Wall& w : walls_) mark_built(w);
-  list_valid_ = true;
-  ++n_rebuilds_;
-}
-
-void DemSystem::build_wall_candidates() {
-  const auto n_slots = walls_.size();  // by slot (walls.hpp, WallSlots)
-  std::vector<int> particle, first(n_slots + 1, 0);
-  std::vector<Vec3> history;
-  const bool carry = wall_first_.size() == n_slots + 1;
-  for (std::size_t w = 0; w < n_slots; ++w) {
-    std::size_t a = carry ? wall_first_[w] : 0;
-    const std::size_t a_end = carry ? wall_first_[w + 1] : 0;
-    for (std::size_t i = 0; i < p_.size(); ++i) {
-      // The candidates' round-off need not be the kernel's: only touching contacts give forces.
-      if (gap_at(walls_[w], p_.x[i], p_.radius[i]) >= skin_) continue;
-      particle.push_back(static_cast<int>(i));
-      Vec3 h{};
-      while (a < a_end && wall_particle_[a] < static_cast<int>(i)) ++a;
-      if (a < a_end && wall_particle_[a] == static_cast<int>(i)) h = wall_history_[a];
-      history.push_back(h);
-    }
-    first[w + 1] = static_cast<int>(particle.size());
-  }
-  wall_particle_.swap(particle);
-  wall_first_.swap(first);
-  wall_history_.swap(history);
-  wall_out_.resize(wall_particle_.size(), wall_particle_.size());
-  wall_normal_.resize(wall_particle_.size());
-  wall_elastic_normal_.resize(wall_particle_.size());
 }
 
 DemEnergy DemSystem::energy() const {
   DemEnergy e;
   e.kinetic = p_.kinetic_energy();
-  for (double u : pair_out_.elastic) e.elastic += u;  // pair order; zero where not touching
-  for (std::size_t c = 0; c < wall_particle_.size(); ++c)
-    if (wall_out_.active[c]) e.elastic += wall_out_.out[c].elastic;
+  e.elastic = stored_energy(net_);  // pairs in pair order, then the wall contacts
   // A ring's energies and a plane's work; the zeros the other shapes add change no sum (a
   // sum of these terms is never -0).
   for (const Wall& w : walls_) {
@@ -339,14 +250,6 @@ DemEnergy DemSystem::energy() const {
   e.dissipated += removed_dissipated_;
   e.edited = edited_energy_;
   return e;
-}
-
-std::size_t DemSystem::n_contacts() const {
-  return static_cast<std::size_t>(std::count(pair_out_.active.begin(), pair_out_.active.end(), 1));
-}
-
-std::size_t DemSystem::n_wall_contacts() const {
-  return static_cast<std::size_t>(std::count(wall_out_.active.begin(), wall_out_.active.end(), 1));
 }
 
 bool DemSystem::finite() const {

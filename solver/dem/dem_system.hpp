@@ -14,6 +14,7 @@
 
 #include "dem/contact_history.hpp"
 #include "dem/contact_law.hpp"
+#include "dem/contact_network.hpp"
 #include "dem/neighbour_list.hpp"
 #include "dem/particles.hpp"
 #include "dem/thread_governor.hpp"
@@ -133,9 +134,7 @@ class DemSystem {
   /// last force evaluation, in candidate (particle) order: the contact forces a deformable
   /// wall's owner maps back onto its surface (the wall feels minus them).
   template <class F> void for_each_wall_force(int slot, F&& f) const {
-    if (!forces_valid_ || wall_first_.size() <= static_cast<std::size_t>(slot) + 1) return;
-    for (int c = wall_first_[slot]; c < wall_first_[slot + 1]; ++c)
-      if (wall_out_.active[c]) f(wall_particle_[c], wall_out_.out[c].force);
+    if (forces_valid_) dem::for_each_wall_force(net_, slot, f);
   }
 
   /// Largest dt step() accepts (s): the raw limit, min over the Rayleigh step of the smallest
@@ -172,7 +171,7 @@ class DemSystem {
   /// between begin_step() and finish_step().
   EditMap edit(const ParticleEdit& e);
   /// Owner blocks as index ranges [block_first()[b], block_first()[b+1]) (DemOptions::owner_block).
-  const std::vector<int>& block_first() const { return block_first_; }
+  const std::vector<int>& block_first() const { return net_.block_first; }
   /// How many locality re-sorts (DemOptions::resort_added_fraction) edits have triggered.
   std::size_t n_resorts() const { return n_resorts_; }
   /// Sets every grain's velocity and spin (and a compliant tube's radial speed) to zero
@@ -204,17 +203,19 @@ class DemSystem {
 
   DemEnergy energy() const;
   /// Every touching contact of the last force evaluation, pairs first (in pair order), then
-  /// wall contacts (in slot, particle order): one serial pass over the contact flags the sweep
-  /// wrote. Nothing between an edit or restore and the next evaluation. Defined in
-  /// dem_contacts.hpp; calls pair(i, j, x_j - x_i, |x_j - x_i|) for grain pairs (i < j by pair
-  /// order) and wall(i, slot, unit normal towards the wall, overlap, elastic normal force: the
-  /// wall law's spring without its dashpot, as a grain pair's Hertz force; slot by the
-  /// WallSlots rule).
-  template <class Pair, class OnWall> void for_each_touching_contact(Pair&& pair, OnWall&& wall) const;
-  std::size_t n_pairs() const { return pairs_.size(); }
-  std::size_t n_contacts() const;       ///< touching grain pairs
-  std::size_t n_wall_contacts() const;  ///< touching grain-wall contacts
-  std::size_t n_rebuilds() const { return n_rebuilds_; }
+  /// wall contacts (in slot, particle order): contact_network.hpp, for_each_touching_contact
+  /// (the elastic normal force it passes for a wall is the wall law's spring without its
+  /// dashpot, as a grain pair's Hertz force). Nothing between an edit or restore and the next
+  /// evaluation.
+  template <class Pair, class OnWall> void for_each_touching_contact(Pair&& pair, OnWall&& wall) const {
+    if (forces_valid_) dem::for_each_touching_contact(net_, p_, walls_, pair, wall);
+  }
+  /// The contact network (contact_network.hpp): lists, owner blocks, histories, outputs.
+  const ContactNetwork& network() const { return net_; }
+  std::size_t n_pairs() const { return net_.pairs.size(); }
+  std::size_t n_contacts() const { return n_touching_pairs(net_); }              ///< touching grain pairs
+  std::size_t n_wall_contacts() const { return n_touching_wall_contacts(net_); }  ///< touching grain-wall contacts
+  std::size_t n_rebuilds() const { return net_.n_rebuilds; }
   /// The thread-count choice of step() (DemOptions::adapt_threads): probes and switches.
   const ThreadGovernor& thread_governor() const { return governor_; }
   double skin() const { return skin_; }
@@ -248,29 +249,6 @@ class DemSystem {
   const Cylinder& cylinder_at(int k) const {
     return std::get<Cylinder>(walls_[wall_slots().slot(WallKind::cylinder, k)].shape);
   }
-  // Per-contact outputs. ContactOut is what the gathering particle receives (for a pair: the
-  // partner j, since i sums its own side while computing; for a wall: the grain), and the
-  // contact's stored energy: one 64-byte cache line per contact, so that the scattered store
-  // of a pair's partner side touches one line, not two or three.
-  struct alignas(64) ContactOut {
-    Vec3 force, torque;
-    double dissipated = 0;
-    double elastic = 0;
-  };
-  // For walls, active[c] flags a touching contact c. For pairs, active[k] and elastic[k] (the
-  // stored energy; out[].elastic stays 0) are indexed by pair (written in order while the
-  // owners are swept), and the slots and energies of pairs that do not touch hold zeros
-  // (cleared when a contact separates, and at every rebuild), so that gather() and energy()
-  // add every one without a branch: adding +0 to a sum that started at +0 leaves it bitwise
-  // unchanged (such a sum is never -0). For pairs, out holds the cross-block slots only.
-  struct ContactStore {
-    std::vector<ContactOut> out;
-    std::vector<unsigned char> active;
-    std::vector<double> elastic;  // pairs only
-    // n contacts (active, elastic), n_slots outputs (out); all inactive, all zero.
-    void resize(std::size_t n, std::size_t n_slots);
-  };
-
   // Raw views of what the two pair kernels (dem_forces.cpp, dem_forces_batched.cpp) read and
   // write, with the two steps they must do alike so that both keep one summation order.
   struct PairArrays {
@@ -318,18 +296,11 @@ class DemSystem {
   void kick_drift(double half_dt, double dt);   // begin_step: half kick, then drift
   void kick_retard(double half_dt, double dt);  // finish_step: half kick, then retardation
   int threads_for_step();                       // the governor's count (or the caller's)
-  void check_contact_history(const ContactHistory& h, std::size_t n_particles) const;
-  void attach_contact_history(const ContactHistory& h);  // the carry of restore / seed
-  bool needs_rebuild() const;
-  void rebuild();
-  void build_wall_candidates();
+  void rebuild();  // the network's, then the walls marked built
   void check_dt(double dt) const;
   double compute_stable_dt() const;
   void refresh_after_edit();
-  void reset_owner_blocks();
-  // dem_edit.cpp: carry the contact lists and per-contact outputs through an index map
-  // (general: a pair whose order flips gets its history negated), and the locality re-sort.
-  void remap_contacts(const std::vector<int>& old_to_new, std::size_t n_new);
+  // dem_edit.cpp: whether added grains overlap something, and the locality re-sort.
   bool added_grains_touch(std::size_t first_added) const;
   std::vector<int> resort_for_locality();  // returns old_to_new of the re-sort
 
@@ -338,39 +309,20 @@ class DemSystem {
   ContactLaw law_;
   DemOptions opt_;
   double skin_ = 0, time_ = 0, pending_dt_ = 0, stable_dt_ = 0;
-  bool list_valid_ = false, forces_valid_ = false, particles_changed_ = false;
-  std::size_t n_rebuilds_ = 0;
+  bool forces_valid_ = false, particles_changed_ = false;
   // The thread count of step(): chosen from the measured wall time of begin_step + finish_step
   // (opt_.adapt_threads); threads_for_step() rebuilds it when the caller's count changes.
   ThreadGovernor governor_{1};
   double step_seconds_ = 0;
   int step_threads_ = 0;  // the count begin_step chose for this step (0: the caller's)
-  double max_disp2_ = 0;
 
   // By slot (WallSlots): planes first, so that every loop over walls keeps the order the
   // force sums have always had (planes, then cylinders).
   std::vector<Wall> walls_;
   int n_planes_ = 0;
 
-  PairList pairs_;
-  ContactStore pair_out_;  // indexed by slot (see below)
-  // Wall-contact candidates, grouped by wall slot (planes, then cylinders), sorted by particle.
-  std::vector<int> wall_particle_, wall_first_;
-  std::vector<Vec3> wall_history_;
-  ContactStore wall_out_;
-  std::vector<double> wall_normal_;  // normal force of each wall contact, N
-  std::vector<double> wall_elastic_normal_;  // its elastic part (for_each_touching_contact), N
-  // Gather lists. Pair k whose partner lies in another owner block (DemOptions::owner_block; else
-  // pair_slot_[k] = -1) stores its partner's side in slot pair_slot_[k] of pair_out_; the
-  // slots of particle q are [partner_first_[q], partner_first_[q+1]) (pair order), so the
-  // gather streams through memory. Wall contacts of q: wall_entry_[wall_first_of_[q] ...].
-  std::vector<int> pair_slot_, partner_first_, wall_first_of_, wall_entry_;
-
-  std::vector<Vec3> x_at_build_;
+  ContactNetwork net_;
   std::vector<double> dissipated_;  // per particle, J
-  // Owner blocks (DemOptions::owner_block): uniform at construction and after a re-sort,
-  // carried through edits. Never empty blocks.
-  std::vector<int> block_first_;
   double removed_dissipated_ = 0;  // dissipation booked by grains an edit removed, J
   double edited_energy_ = 0;       // DemEnergy::edited, J
   std::size_t added_since_sort_ = 0, n_resorts_ = 0;
