@@ -26,14 +26,6 @@ namespace kolsky::dem {
 
 namespace {
 
-/// v reordered: entry k is v[order[k]] (order may leave entries out).
-template <class T>
-std::vector<T> gathered(const std::vector<T>& v, const std::vector<int>& order) {
-  std::vector<T> out(order.size());
-  for (std::size_t k = 0; k < order.size(); ++k) out[k] = v[static_cast<std::size_t>(order[k])];
-  return out;
-}
-
 /// The survivors in `order` (Particles::permute keeps only those), then `added` with no force.
 Particles compacted(Particles p, const std::vector<int>& order, const Particles& added) {
   p.permute(order);
@@ -78,12 +70,9 @@ EditMap DemSystem::edit(const ParticleEdit& e) {
 
   std::vector<int> survivors;  // new index k <- old survivors[k]
   survivors.reserve(n_kept);
-  for (std::size_t i = 0; i < n; ++i) {
+  for (std::size_t i = 0; i < n; ++i)
     if (old_to_new[i] >= 0) survivors.push_back(static_cast<int>(i));
-    else removed_dissipated_ += dissipated_[i];
-  }
-  dissipated_ = gathered(dissipated_, survivors);
-  dissipated_.resize(n_new, 0.0);
+  carry_ledger(ledger_, old_to_new, survivors, n_new);
 
   // Owner blocks: survivors stay in theirs (emptied blocks vanish), added grains in new ones.
   carry_owner_blocks(net_, old_to_new, n_kept, e.added.size(), opt_.owner_block);
@@ -99,7 +88,7 @@ EditMap DemSystem::edit(const ParticleEdit& e) {
   // survivors' forces and stored energies stand as they are.
   if (contacts_change) compute_forces(0.0);
   const DemEnergy after = energy();
-  edited_energy_ += (before.kinetic + before.elastic) - (after.kinetic + after.elastic);
+  book_edit(ledger_, before, after);
 
   added_since_sort_ += e.added.size();
   EditMap map{std::move(old_to_new), std::vector<int>(e.added.size())};
@@ -139,7 +128,7 @@ std::vector<int> DemSystem::resort_for_locality() {
   std::vector<int> old_to_new(order.size());
   for (std::size_t k = 0; k < order.size(); ++k) old_to_new[static_cast<std::size_t>(order[k])] = static_cast<int>(k);
   p_.permute(order);
-  dissipated_ = gathered(dissipated_, order);
+  permute_ledger(ledger_, order);
   remap(net_, old_to_new, p_.size(), walls_.size());
   net_.block_first = uniform_owner_blocks(p_.size(), opt_.owner_block);
   added_since_sort_ = 0;

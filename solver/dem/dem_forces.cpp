@@ -19,7 +19,7 @@ DemSystem::PairArrays DemSystem::pair_arrays() {
   return {c.pairs.first.data(), c.pairs.i.data(), c.pairs.j.data(), c.pair_slot.data(),
           p_.material.data(), p_.x.data(), p_.v.data(), p_.omega.data(), p_.radius.data(),
           p_.mass.data(), c.pairs.history.data(), p_.f.data(), p_.torque.data(),
-          dissipated_.data(), c.pair_out.elastic.data(), c.pair_out.out.data(),
+          ledger_.dissipated.data(), c.pair_out.elastic.data(), c.pair_out.out.data(),
           c.pair_out.active.data(), c.block_first.data(), n,
           static_cast<int>(c.block_first.size()) - 1};
 }
@@ -148,7 +148,7 @@ void DemSystem::gather() {
   const ContactStore& wo = net_.wall_out;
   Vec3* f = p_.f.data();
   Vec3* tq = p_.torque.data();
-  double* diss = dissipated_.data();
+  double* diss = ledger_.dissipated.data();
 #pragma omp for schedule(static)
   for (std::ptrdiff_t q = 0; q < n; ++q) {
     Vec3 F = f[q], T = tq[q];

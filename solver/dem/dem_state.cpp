@@ -24,13 +24,11 @@ namespace {
 DemState DemSystem::save_state() const {
   DemState s;
   s.particles = p_;
-  s.dissipated = dissipated_;
   s.time = time_;
   s.pending_dt = pending_dt_;
   s.forces_valid = forces_valid_;
   static_cast<ContactNetworkState&>(s) = save_network(net_, p_.size(), walls_.size());
-  s.removed_dissipated = removed_dissipated_;
-  s.edited_energy = edited_energy_;
+  static_cast<EnergyLedger&>(s) = ledger_;
   s.added_since_sort = added_since_sort_;
   // The checkpoint keeps its two wall records (the layout io/ writes): walls by slot.
   for (const Wall& w : walls_) {
@@ -49,17 +47,15 @@ void DemSystem::restore_state(const DemState& s) {
   if (s.planes.size() != static_cast<std::size_t>(n_planes()) ||
       s.tubes.size() != static_cast<std::size_t>(n_cylinders()))
     bad_state("the state has other walls than the system");
-  if (s.dissipated.size() != n) bad_state("dissipated energy: one value per particle needed");
+  check_ledger_state(s, n);
   validate(s.particles, materials_.size());
   check_network_state(s, n, walls_.size());
 
   p_ = s.particles;
-  dissipated_ = s.dissipated;
   time_ = s.time;
   pending_dt_ = s.pending_dt;
   forces_valid_ = s.forces_valid;
-  removed_dissipated_ = s.removed_dissipated;
-  edited_energy_ = s.edited_energy;
+  ledger_ = s;
   added_since_sort_ = s.added_since_sort;
   particles_changed_ = false;
   skin_ = opt_.skin_over_min_radius * *std::min_element(p_.radius.begin(), p_.radius.end());

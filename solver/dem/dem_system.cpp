@@ -52,7 +52,7 @@ DemSystem::DemSystem(Particles particles, std::vector<Material> materials, Conta
   if (!(opt_.rolling.reference_dt > 0))
     throw InputError("", "dem.rolling.reference_dt", "must be > 0");
   skin_ = opt_.skin_over_min_radius * *std::min_element(p_.radius.begin(), p_.radius.end());
-  dissipated_.assign(p_.size(), 0.0);
+  ledger_.dissipated.assign(p_.size(), 0.0);
   net_.block_first = uniform_owner_blocks(p_.size(), opt_.owner_block);
   stable_dt_ = compute_stable_dt();
 }
@@ -105,7 +105,7 @@ void DemSystem::refresh_after_edit() {
   // Radii, masses or the particle count may have changed: revalidate and rederive.
   validate(p_, materials_.size());
   skin_ = opt_.skin_over_min_radius * *std::min_element(p_.radius.begin(), p_.radius.end());
-  dissipated_.resize(p_.size(), 0.0);
+  ledger_.dissipated.resize(p_.size(), 0.0);
   reset_for_particles(net_, p_.size(), opt_.owner_block);
   stable_dt_ = compute_stable_dt();
   particles_changed_ = false;
@@ -225,31 +225,13 @@ void DemSystem::kick_drift(double h, double dt) {
 
 // Second half kick and the rotational retardation (Eqs. 4.12-4.14) of the grains, then the rings.
 void DemSystem::kick_retard(double h, double dt) {
-  dem::kick_retard(p_, h, opt_.rolling.factor(dt), dissipated_);
+  dem::kick_retard(p_, h, opt_.rolling.factor(dt), ledger_.dissipated);
   for (Wall& w : walls_) kick(w, h);
 }
 
 void DemSystem::rebuild() {
   dem::rebuild(net_, p_, walls_, skin_);
   for (Wall& w : walls_) mark_built(w);
-}
-
-DemEnergy DemSystem::energy() const {
-  DemEnergy e;
-  e.kinetic = p_.kinetic_energy();
-  e.elastic = stored_energy(net_);  // pairs in pair order, then the wall contacts
-  // A ring's energies and a plane's work; the zeros the other shapes add change no sum (a
-  // sum of these terms is never -0).
-  for (const Wall& w : walls_) {
-    const WallEnergy we = energy_of(w);
-    e.kinetic += we.kinetic;
-    e.elastic += we.elastic;
-    e.wall_work += we.work;
-  }
-  for (double d : dissipated_) e.dissipated += d;
-  e.dissipated += removed_dissipated_;
-  e.edited = edited_energy_;
-  return e;
 }
 
 bool DemSystem::finite() const {

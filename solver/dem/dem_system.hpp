@@ -15,6 +15,7 @@
 #include "dem/contact_history.hpp"
 #include "dem/contact_law.hpp"
 #include "dem/contact_network.hpp"
+#include "dem/energy_ledger.hpp"
 #include "dem/neighbour_list.hpp"
 #include "dem/particles.hpp"
 #include "dem/thread_governor.hpp"
@@ -91,19 +92,6 @@ struct ParticleEdit {
 /// added_at[k] = the new index of added grain k.
 struct EditMap {
   std::vector<int> old_to_new, added_at;
-};
-
-/// Energy ledger (J). kinetic + elastic + dissipated - wall_work is conserved up to the
-/// integration error (and the non-potential part of Mindlin's overlap-dependent k_t).
-struct DemEnergy {
-  double kinetic = 0;     ///< particles (translation + rotation) and the tube's radial mode
-  double elastic = 0;     ///< contact springs and the tube's hoop spring
-  double dissipated = 0;  ///< dashpots, sliding, rolling friction and rolling retardation
-  double wall_work = 0;   ///< work done by moving planes on the particles
-  /// Energy taken out by particle edits: the removed grains' kinetic energy and the energy
-  /// stored in their contacts, minus the added grains' kinetic and contact energy (J). So
-  /// kinetic + elastic + dissipated + edited - wall_work stays conserved across edits.
-  double edited = 0;
 };
 
 class DemSystem {
@@ -201,7 +189,8 @@ class DemSystem {
   double cylinder_force(int k) const { return walls_[wall_slots().slot(WallKind::cylinder, k)].force; }
   double cylinder_displacement(int k) const { return cylinder_at(k).u; }
 
-  DemEnergy energy() const;
+  /// The energy ledger's reading (energy_ledger.hpp).
+  DemEnergy energy() const { return dem::energy(ledger_, p_, net_, walls_); }
   /// Every touching contact of the last force evaluation, pairs first (in pair order), then
   /// wall contacts (in slot, particle order): contact_network.hpp, for_each_touching_contact
   /// (the elastic normal force it passes for a wall is the wall law's spring without its
@@ -322,9 +311,7 @@ class DemSystem {
   int n_planes_ = 0;
 
   ContactNetwork net_;
-  std::vector<double> dissipated_;  // per particle, J
-  double removed_dissipated_ = 0;  // dissipation booked by grains an edit removed, J
-  double edited_energy_ = 0;       // DemEnergy::edited, J
+  EnergyLedger ledger_;
   std::size_t added_since_sort_ = 0, n_resorts_ = 0;
 };
 
