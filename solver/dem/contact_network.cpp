@@ -150,7 +150,7 @@ void rebuild(ContactNetwork& net, const Particles& p, const std::vector<Wall>& w
   const int n = static_cast<int>(p.size());
   assign_partner_slots(net, n);
   // A carried non-zero history counts as active: the batched sweep clears the history of a
-  // pair only when it goes from active to not touching (dem_forces_batched.cpp). The slots
+  // pair only when it goes from active to not touching (contact_forces_batched.cpp). The slots
   // stay zero; every evaluation rewrites active[] before anything reads it.
   for (std::size_t k = 0; k < net.pairs.size(); ++k) {
     const Vec3& h = net.pairs.history[k];

@@ -6,7 +6,7 @@
 // energies, wall normal forces). rebuild() makes it from the particles' positions (the
 // neighbour list, neighbour_list.hpp) and the walls; remap() carries it through particle edits
 // by key; save_network / restore_network are its own part of a checkpoint (dem_state.hpp).
-// It holds no law: the force kernels (dem_forces*.cpp) evaluate the laws into its outputs.
+// It holds no law: the force kernels (contact_forces*.cpp) evaluate the laws into its outputs.
 //
 // Towards MPI (not implemented; docs/dem.md, "Towards MPI"): one rank owns grains
 // [0, n_owned) of its Particles and holds ghost copies of its neighbours' boundary grains at
@@ -152,7 +152,7 @@ template <class F> void for_each_wall_force(const ContactNetwork& net, int slot,
 /// evaluation (pair order), then wall(i, slot, unit normal towards the wall, overlap, elastic
 /// normal force) for every touching wall contact (by slot, then grain): one serial pass over
 /// the flags the sweep wrote, recomputing only the geometry of those contacts with the sweep's
-/// own formulas (dem_forces.cpp; wall.hpp), so a contact is visited exactly when it produced a
+/// own formulas (contact_forces.cpp; wall.hpp), so a contact is visited exactly when it produced a
 /// force. Serial and in a fixed order: its users decide things (which grains break) that must
 /// not depend on the thread count. A template, so that the caller's work is inlined.
 template <class Pair, class OnWall>

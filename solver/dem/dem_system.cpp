@@ -1,5 +1,5 @@
-// DemSystem: construction, walls, time stepping, neighbour-list upkeep, energies and the
-// stable time step (see dem_system.hpp). The contact kernels live in dem_forces.cpp.
+// DemSystem: construction, walls, time stepping, neighbour-list upkeep and the stable time
+// step (see dem_system.hpp). The contact kernels live in contact_forces*.cpp.
 #include "dem/dem_system.hpp"
 
 #include <algorithm>
@@ -15,6 +15,7 @@
 
 #include "core/errors.hpp"
 #include "core/stability_check.hpp"
+#include "dem/contact_forces.hpp"
 #include "dem/contact_hertz_mindlin.hpp"
 #include "dem/integrator.hpp"
 
@@ -227,6 +228,13 @@ void DemSystem::kick_drift(double h, double dt) {
 void DemSystem::kick_retard(double h, double dt) {
   dem::kick_retard(p_, h, opt_.rolling.factor(dt), ledger_.dissipated);
   for (Wall& w : walls_) kick(w, h);
+}
+
+void DemSystem::compute_forces(double dt) {
+  if (particles_changed_) refresh_after_edit();
+  if (needs_rebuild(net_, skin_, walls_)) rebuild();
+  evaluate_contacts(net_, p_, ledger_.dissipated, law_, opt_.batched_hertz_mindlin, walls_, dt);
+  forces_valid_ = true;
 }
 
 void DemSystem::rebuild() {

@@ -24,8 +24,7 @@
 
 namespace kolsky::dem {
 
-struct DemState;               // dem_state.hpp: checkpoint/restart state
-struct HertzMindlinConstants;  // hertz_mindlin_batch.hpp
+struct DemState;  // dem_state.hpp: checkpoint/restart state
 
 /// Rotational resistance by angular-velocity retardation, Eqs. 4.12-4.14.
 struct RollingRetardation {
@@ -226,62 +225,13 @@ class DemSystem {
   void seed_contact_history(const ContactHistory& h);
 
  private:
-  // Loops shorter than this run on one thread: a parallel region costs microseconds, which
-  // would dominate the one- and two-particle verification runs.
-  static constexpr std::ptrdiff_t kParallelMin = 2048;
-  // Wall contacts per chunk handed to a free thread (compute_forces): small enough to even out
-  // the threads' sweeps, large enough that taking a chunk (one atomic) costs nothing.
-  static constexpr int kWallChunk = 256;
-
   Wall& wall_of(WallKind kind, int k);  // drive_*: checked
   const Plane& plane_at(int k) const { return std::get<Plane>(walls_[wall_slots().slot(WallKind::plane, k)].shape); }
   const Cylinder& cylinder_at(int k) const {
     return std::get<Cylinder>(walls_[wall_slots().slot(WallKind::cylinder, k)].shape);
   }
-  // Raw views of what the two pair kernels (dem_forces.cpp, dem_forces_batched.cpp) read and
-  // write, with the two steps they must do alike so that both keep one summation order.
-  struct PairArrays {
-    const int *first, *pi, *pj, *slot, *mat;
-    const Vec3 *x, *v, *w;
-    const double *rad, *mass;
-    Vec3 *hist, *f, *tq;
-    double *diss, *stored;
-    ContactOut* out;
-    unsigned char* active;
-    const int* block_first;  // owner block b: grains [block_first[b], block_first[b+1])
-    int n, n_blocks;         // grains, blocks
-
-    /// Partner j's side of touching pair k (force on i, torque on j, half the dissipation):
-    /// added to j now when j is in the owner's block (slot -1: the partner's owners all come
-    /// in pair order before j's own sum), else stored in j's slot for gather(); and the
-    /// pair's stored energy.
-    void partner_side(int k, int j, const Vec3& force_i, const Vec3& torque_j,
-                      double half_dissipated, double elastic) const {
-      const int sk = slot[k];
-      if (sk < 0) {
-        f[j] += -force_i;
-        tq[j] += torque_j;
-        diss[j] += half_dissipated;
-      } else {
-        out[sk] = {-force_i, torque_j, half_dissipated, 0.0};
-      }
-      stored[k] = elastic;
-    }
-    /// Pair k stopped touching: its slot and stored energy read zero again.
-    void separated(int k) const {
-      if (slot[k] >= 0) out[slot[k]] = ContactOut{};
-      stored[k] = 0;
-    }
-  };
-  PairArrays pair_arrays();
-
+  // Lists rebuilt if needed, then evaluate_contacts (contact_forces.hpp).
   void compute_forces(double dt);
-  template <class Law> void pair_forces(const Law& law, double dt);
-  // dem_forces_batched.cpp; `table`: hertz_mindlin_table() of the law.
-  void hertz_mindlin_pair_forces(const HertzMindlinConstants* table, int n_mat, double dt);
-  // The contacts of wall `slot` (its shape resolved once, outside the loop; dem_forces.cpp).
-  template <class Law, class Shape> void wall_forces(const Law& law, const Shape& shape, int slot, double dt);
-  void gather();
   void kick_drift(double half_dt, double dt);   // begin_step: half kick, then drift
   void kick_retard(double half_dt, double dt);  // finish_step: half kick, then retardation
   int threads_for_step();                       // the governor's count (or the caller's)
