@@ -3,15 +3,9 @@
 #include "dem/dem_system.hpp"
 
 #include <algorithm>
-#include <atomic>
-#include <chrono>
 #include <cmath>
-#include <numbers>
 #include <limits>
-#include <sstream>
 #include <stdexcept>
-
-#include <omp.h>
 
 #include "core/errors.hpp"
 #include "core/stability_check.hpp"
@@ -30,7 +24,7 @@ double RollingRetardation::factor(double dt) const {
 DemSystem::DemSystem(Particles particles, std::vector<Material> materials, ContactLaw law,
                      DemOptions options)
     : p_(std::move(particles)), materials_(std::move(materials)), law_(std::move(law)),
-      opt_(options) {
+      opt_(options), exec_(options.adapt_threads, options.governor) {
   validate(materials_);
   validate(p_, materials_.size());
   if (p_.size() == 0) throw InputError("", "dem.particles", "at least one particle is needed");
@@ -159,59 +153,25 @@ void DemSystem::step(double dt) {
   finish_step();
 }
 
-namespace {
-using Clock = std::chrono::steady_clock;
-double seconds_since(Clock::time_point t0) {
-  return std::chrono::duration<double>(Clock::now() - t0).count();
-}
-
-// The last count chosen by any DemSystem's governor in this process (0: none yet), the start of
-// the next governor (ThreadGovernorOptions::start_threads). Only the speed depends on it.
-std::atomic<int> g_last_step_threads{0};
-
-}  // namespace
-
-int DemSystem::threads_for_step() {
-  const int cap = omp_get_max_threads();
-  if (!opt_.adapt_threads || cap <= 1) return cap;
-  if (governor_.max_threads() != cap) {
-    ThreadGovernorOptions o = opt_.governor;
-    if (o.start_threads == 0) o.start_threads = g_last_step_threads.load(std::memory_order_relaxed);
-    governor_ = ThreadGovernor(cap, o);
-  }
-  return governor_.threads();
-}
-
 void DemSystem::begin_step(double dt) {
   if (particles_changed_) refresh_after_edit();
   check_dt(dt);
   if (pending_dt_ > 0) finish_step();
-  step_threads_ = threads_for_step();
-  const ScopedThreads scope(step_threads_);
-  const auto t0 = Clock::now();
-  if (!forces_valid_) compute_forces(0.0);
-  kick_drift(0.5 * dt, dt);
-  time_ += dt;
-  pending_dt_ = dt;
-  step_seconds_ = seconds_since(t0);
+  exec_.first_half([&] {
+    if (!forces_valid_) compute_forces(0.0);
+    kick_drift(0.5 * dt, dt);
+    time_ += dt;
+    pending_dt_ = dt;
+  });
 }
 
 void DemSystem::finish_step() {
-  const ScopedThreads scope(step_threads_);
-  const auto t0 = Clock::now();
-  const double dt = pending_dt_;
-  compute_forces(dt);
-  kick_retard(0.5 * dt, dt);
-  pending_dt_ = 0;
-  // Only the DEM's own work is timed: what the caller does between steps (bars, output)
-  // does not depend on this choice and would only add noise to the comparison.
-  if (step_threads_ > 0 && opt_.adapt_threads && governor_.max_threads() > 1) {
-    const long switches = governor_.switches();
-    governor_.record(step_seconds_ + seconds_since(t0));
-    if (governor_.switches() != switches)
-      g_last_step_threads.store(governor_.threads(), std::memory_order_relaxed);
-  }
-  step_threads_ = 0;
+  exec_.second_half([&] {
+    const double dt = pending_dt_;
+    compute_forces(dt);
+    kick_retard(0.5 * dt, dt);
+    pending_dt_ = 0;
+  });
 }
 
 // The grains by the integrator (integrator.hpp), then the walls: a compliant ring's half

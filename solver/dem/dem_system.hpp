@@ -18,9 +18,9 @@
 #include "dem/energy_ledger.hpp"
 #include "dem/neighbour_list.hpp"
 #include "dem/particles.hpp"
-#include "dem/thread_governor.hpp"
 #include "dem/wall.hpp"
 #include "dem/walls.hpp"
+#include "time/step_executor.hpp"
 
 namespace kolsky::dem {
 
@@ -60,14 +60,14 @@ struct DemOptions {
   /// covers a grain of this radius of every material from the start, so the step fixed when
   /// the run is planned stays stable as grains break (docs/breakage.md). 0: the grains present.
   double smallest_radius_to_come = 0.0;
-  /// step() (begin_step, finish_step) chooses between one thread and the caller's OpenMP
-  /// count from the step rate it measures (thread_governor.hpp): two threads beside a busy
-  /// core are slower than one under any wait policy. Results do not depend on it (they are
-  /// bitwise the same for any thread count); false: always the caller's count (benchmarks
-  /// that measure a fixed count).
+  /// step() (begin_step, finish_step) runs through an executor (time/step_executor.hpp) that
+  /// chooses between one thread and the caller's OpenMP count from the step rate it measures
+  /// (time/thread_governor.hpp): two threads beside a busy core are slower than one under any
+  /// wait policy. Results do not depend on it (they are bitwise the same for any thread
+  /// count); false: always the caller's count (benchmarks that measure a fixed count).
   bool adapt_threads = true;
-  /// Window, probe interval and margin of that choice (thread_governor.hpp).
-  ThreadGovernorOptions governor;
+  /// Window, probe interval and margin of that choice (time/thread_governor.hpp).
+  time_loop::ThreadGovernorOptions governor;
 };
 
 /// The fraction of stable_dt() at which kolsky's own DEM loops step (packing, pre-stress,
@@ -205,7 +205,7 @@ class DemSystem {
   std::size_t n_wall_contacts() const { return n_touching_wall_contacts(net_); }  ///< touching grain-wall contacts
   std::size_t n_rebuilds() const { return net_.n_rebuilds; }
   /// The thread-count choice of step() (DemOptions::adapt_threads): probes and switches.
-  const ThreadGovernor& thread_governor() const { return governor_; }
+  const time_loop::ThreadGovernor& thread_governor() const { return exec_.governor(); }
   double skin() const { return skin_; }
   bool finite() const;
 
@@ -234,7 +234,6 @@ class DemSystem {
   void compute_forces(double dt);
   void kick_drift(double half_dt, double dt);   // begin_step: half kick, then drift
   void kick_retard(double half_dt, double dt);  // finish_step: half kick, then retardation
-  int threads_for_step();                       // the governor's count (or the caller's)
   void rebuild();  // the network's, then the walls marked built
   void check_dt(double dt) const;
   double compute_stable_dt() const;
@@ -249,11 +248,9 @@ class DemSystem {
   DemOptions opt_;
   double skin_ = 0, time_ = 0, pending_dt_ = 0, stable_dt_ = 0;
   bool forces_valid_ = false, particles_changed_ = false;
-  // The thread count of step(): chosen from the measured wall time of begin_step + finish_step
-  // (opt_.adapt_threads); threads_for_step() rebuilds it when the caller's count changes.
-  ThreadGovernor governor_{1};
-  double step_seconds_ = 0;
-  int step_threads_ = 0;  // the count begin_step chose for this step (0: the caller's)
+  // The thread count of step(): chosen from the measured wall time of begin_step's and
+  // finish_step's work (opt_.adapt_threads).
+  time_loop::StepExecutor exec_;
 
   // By slot (WallSlots): planes first, so that every loop over walls keeps the order the
   // force sums have always had (planes, then cylinders).
