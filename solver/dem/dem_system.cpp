@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numeric>
 #include <stdexcept>
 
 #include "core/errors.hpp"
@@ -14,12 +15,6 @@
 #include "dem/integrator.hpp"
 
 namespace kolsky::dem {
-
-double RollingRetardation::factor(double dt) const {
-  if (factor_per_reference_step == 1.0 || factor_per_reference_step == 0.0)
-    return factor_per_reference_step;
-  return std::pow(factor_per_reference_step, dt / reference_dt);
-}
 
 DemSystem::DemSystem(Particles particles, std::vector<Material> materials, ContactLaw law,
                      DemOptions options)
@@ -200,6 +195,40 @@ void DemSystem::compute_forces(double dt) {
 void DemSystem::rebuild() {
   dem::rebuild(net_, p_, walls_, skin_);
   for (Wall& w : walls_) mark_built(w);
+}
+
+// The facade's edit (particle_edit.hpp does the carrying): energies booked against evaluated
+// forces before and after, as begin_step would evaluate them first.
+EditMap DemSystem::edit(const ParticleEdit& e) {
+  if (pending_dt_ > 0) throw std::logic_error("DemSystem::edit between begin_step and finish_step");
+  if (particles_changed_) refresh_after_edit();
+  std::vector<int> old_to_new = edit_index_map(e, p_.size(), materials_.size());
+  const std::size_t n_kept = p_.size() - e.removed.size();
+  if (!forces_valid_) compute_forces(0.0);
+  const DemEnergy before = energy();
+  bool contacts_change = apply_edit(p_, net_, ledger_, walls_.size(), e, old_to_new, opt_.owner_block);
+  skin_ = opt_.skin_over_min_radius * *std::min_element(p_.radius.begin(), p_.radius.end());
+  stable_dt_ = compute_stable_dt();
+  if (!contacts_change) contacts_change = added_grains_touch(p_, walls_, n_kept, skin_);
+  // A contact gained or lost: evaluate now, as begin_step would first (history unchanged, no
+  // time advance), so the stored energy the edit moved is booked exactly. Otherwise the
+  // survivors' forces and stored energies stand as they are.
+  if (contacts_change) compute_forces(0.0);
+  book_edit(ledger_, before, energy());
+
+  added_since_sort_ += e.added.size();
+  EditMap map{std::move(old_to_new), std::vector<int>(e.added.size())};
+  std::iota(map.added_at.begin(), map.added_at.end(), static_cast<int>(n_kept));
+  if (opt_.resort_added_fraction > 0 &&
+      static_cast<double>(added_since_sort_) > opt_.resort_added_fraction * static_cast<double>(p_.size())) {
+    const std::vector<int> sorted = resort_for_locality(p_, net_, ledger_, walls_.size(), opt_.owner_block);
+    added_since_sort_ = 0;
+    ++n_resorts_;
+    for (int& q : map.old_to_new)
+      if (q >= 0) q = sorted[static_cast<std::size_t>(q)];
+    for (int& q : map.added_at) q = sorted[static_cast<std::size_t>(q)];
+  }
+  return map;
 }
 
 bool DemSystem::finite() const {

@@ -1,11 +1,14 @@
-// A DEM assembly: particles (struct of arrays), one grain-grain contact law, walls (wall.hpp:
-// planes and cylinders, one concept), a Verlet pair list, and the explicit integrator: velocity
-// Verlet (kick-drift-kick; dashpots see mid-step velocities, as in LIGGGHTS), then rotational
-// retardation w <- k w, Eqs. 4.12-4.14, with k_run = k_ref^(dt/dt_ref) (0.99999975 per 1 ns,
-// Sec. 4.3). Each contact
-// is computed once and gathered per particle in a fixed order, so results are bitwise the same
-// for any OpenMP thread count. Stable dt = safety x min(Rayleigh step of the smallest grain,
-// sqrt(m/k) of the stiffest linear contact, tube ring mode). Details: docs/dem.md.
+// A DEM assembly as a facade over its components (issue 32; docs/architecture.md draws them):
+// particles (particles.hpp), the contact network (contact_network.hpp), the energy ledger
+// (energy_ledger.hpp), the walls (wall.hpp: planes and cylinders, one concept), the grain law
+// (contact_law.hpp) and the step executor (time/step_executor.hpp: the thread count). It keeps
+// what ties them together (options, time, the step in progress, skin, stable dt) and steps
+// them: velocity Verlet (kick-drift-kick; dashpots see mid-step velocities, as in LIGGGHTS),
+// then rotational retardation w <- k w, Eqs. 4.12-4.14 (integrator.hpp), with one force
+// evaluation between (contact_forces.hpp). Each contact is computed once and gathered per
+// particle in a fixed order, so results are bitwise the same for any OpenMP thread count.
+// Stable dt = min(Rayleigh step of the smallest grain, sqrt(m/k) of the stiffest linear
+// contact, tube ring mode); the stepping loop applies its safety factor. Details: docs/dem.md.
 #pragma once
 #include <algorithm>
 #include <cstddef>
@@ -16,7 +19,9 @@
 #include "dem/contact_law.hpp"
 #include "dem/contact_network.hpp"
 #include "dem/energy_ledger.hpp"
+#include "dem/integrator.hpp"
 #include "dem/neighbour_list.hpp"
+#include "dem/particle_edit.hpp"
 #include "dem/particles.hpp"
 #include "dem/wall.hpp"
 #include "dem/walls.hpp"
@@ -25,15 +30,6 @@
 namespace kolsky::dem {
 
 struct DemState;  // dem_state.hpp: checkpoint/restart state
-
-/// Rotational resistance by angular-velocity retardation, Eqs. 4.12-4.14.
-struct RollingRetardation {
-  double factor_per_reference_step = 1.0;  ///< k_lambda^zeta per reference step (1: none), -
-  double reference_dt = 1e-9;              ///< step the factor was given for, s
-
-  /// k_run = k_ref^(dt / dt_ref); 0 stays 0 (full restraint), 1 stays 1.
-  double factor(double dt) const;
-};
 
 struct DemOptions {
   double skin_over_min_radius = 0.5;  ///< Verlet skin as a multiple of the smallest radius
@@ -77,21 +73,6 @@ struct DemOptions {
 /// keep their bits. A scene run applies time.safety_factor instead (0.5 x this by default for
 /// a DEM specimen).
 inline constexpr double kDemStepFraction = 0.3;
-
-/// One particle edit (a grain replaced by its fragments, Sec. 5.2.3): remove the grains
-/// `removed` (indices, unique, any order), then append `added` (positions, velocities, spins,
-/// radii, materials, masses and inertias; their forces are ignored). Survivors keep their
-/// order, added grains follow them (unless the edit triggers a locality re-sort).
-struct ParticleEdit {
-  std::vector<int> removed;
-  Particles added;
-};
-
-/// Where an edit put every grain: old_to_new[i] = the new index of old grain i (-1: removed),
-/// added_at[k] = the new index of added grain k.
-struct EditMap {
-  std::vector<int> old_to_new, added_at;
-};
 
 class DemSystem {
  public:
@@ -145,7 +126,7 @@ class DemSystem {
   /// force evaluation revalidates, rederives skin and stable dt, and rebuilds the lists.
   /// Changing the count this way drops every contact history; edit() keeps them.
   Particles& mutable_particles();
-  /// Removes and adds grains between two steps (dem_edit.cpp), carrying what survives: the
+  /// Removes and adds grains between two steps (particle_edit.hpp), carrying what survives: the
   /// tangential histories of pairs and wall contacts whose grains both remain, every
   /// per-particle array, the forces, and the owner-block partition (each surviving grain
   /// stays in its block, so its sums keep their order). A grain removed with touching
@@ -238,9 +219,6 @@ class DemSystem {
   void check_dt(double dt) const;
   double compute_stable_dt() const;
   void refresh_after_edit();
-  // dem_edit.cpp: whether added grains overlap something, and the locality re-sort.
-  bool added_grains_touch(std::size_t first_added) const;
-  std::vector<int> resort_for_locality();  // returns old_to_new of the re-sort
 
   Particles p_;
   std::vector<Material> materials_;
