@@ -12,7 +12,6 @@
 
 #include "core/errors.hpp"
 #include "dem/contact_hertz_mindlin.hpp"
-#include "dem/dem_contacts.hpp"
 #include "dem/dem_system.hpp"
 #include "dem/wall.hpp"
 

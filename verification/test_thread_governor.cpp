@@ -1,4 +1,4 @@
-// The thread-count rule of DemSystem's step (dem/thread_governor.hpp, issue 18) fed with
+// The thread-count rule of DemSystem's step (time/thread_governor.hpp, issue 18) fed with
 // made-up step times, so each branch is exercised without depending on the machine's clock;
 // and a DemSystem whose governor switches between one and two threads every few steps gives
 // bitwise the results of a fixed count (the choice changes the speed only).
@@ -9,11 +9,14 @@
 #include <functional>
 
 #include "dem/dem_system.hpp"
-#include "dem/thread_governor.hpp"
+#include "time/thread_governor.hpp"
 #include "dem_busy_scene.hpp"
 
 namespace kolsky::dem {
 namespace {
+
+using time_loop::ThreadGovernor;
+using time_loop::ThreadGovernorOptions;
 
 // Feeds `steps` steps whose time is seconds_for(threads) and returns how many of them ran with
 // one thread.

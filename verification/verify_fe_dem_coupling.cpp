@@ -12,7 +12,7 @@
 #include <random>
 
 #include "coupling/fe_dem.hpp"
-#include "dem/dem_contacts.hpp"
+#include "dem/dem_system.hpp"
 #include "dem/test_fills.hpp"
 #include "scene/scene.hpp"
 #include "shpb/assembly.hpp"

@@ -7,7 +7,7 @@
 #include <variant>
 
 #include "dem/apollonian.hpp"
-#include "dem/dem_contacts.hpp"
+#include "dem/dem_system.hpp"
 #include "dem/hertz.hpp"
 
 namespace kolsky::dem {

@@ -15,13 +15,6 @@ namespace kolsky::dem {
 
 namespace {
 
-// Zero histories are not stored (a rebuild starts every new contact at zero). -0.0 is kept:
-// it is not bitwise zero, and the test of this module compares bits.
-bool stored(const Vec3& h) {
-  return h.x != 0 || h.y != 0 || h.z != 0 || std::signbit(h.x) || std::signbit(h.y) ||
-         std::signbit(h.z);
-}
-
 [[noreturn]] void bad_state(const std::string& rule) {
   throw InputError("", "dem.state", rule);
 }
@@ -31,16 +24,12 @@ bool stored(const Vec3& h) {
 DemState DemSystem::save_state() const {
   DemState s;
   s.particles = p_;
-  s.dissipated = dissipated_;
   s.time = time_;
   s.pending_dt = pending_dt_;
   s.forces_valid = forces_valid_;
-  s.n_rebuilds = n_rebuilds_;
-  s.owner_blocks = block_first_;
-  s.removed_dissipated = removed_dissipated_;
-  s.edited_energy = edited_energy_;
+  static_cast<ContactNetworkState&>(s) = save_network(net_, p_.size(), walls_.size());
+  static_cast<EnergyLedger&>(s) = ledger_;
   s.added_since_sort = added_since_sort_;
-  static_cast<ContactHistory&>(s) = contact_history();
   // The checkpoint keeps its two wall records (the layout io/ writes): walls by slot.
   for (const Wall& w : walls_) {
     if (const auto* p = std::get_if<Plane>(&w.shape))
@@ -58,27 +47,16 @@ void DemSystem::restore_state(const DemState& s) {
   if (s.planes.size() != static_cast<std::size_t>(n_planes()) ||
       s.tubes.size() != static_cast<std::size_t>(n_cylinders()))
     bad_state("the state has other walls than the system");
-  if (s.dissipated.size() != n) bad_state("dissipated energy: one value per particle needed");
+  check_ledger_state(s, n);
   validate(s.particles, materials_.size());
-  const auto& b = s.owner_blocks;
-  if (!b.empty()) {
-    bool ok = b.size() >= 2 && b.front() == 0 && b.back() == static_cast<int>(n);
-    for (std::size_t k = 1; ok && k < b.size(); ++k) ok = b[k] > b[k - 1];
-    if (!ok) bad_state("owner blocks must rise strictly from 0 to the particle count");
-  }
-  check_contact_history(s, n);
+  check_network_state(s, n, walls_.size());
 
   p_ = s.particles;
-  dissipated_ = s.dissipated;
   time_ = s.time;
   pending_dt_ = s.pending_dt;
   forces_valid_ = s.forces_valid;
-  n_rebuilds_ = s.n_rebuilds;
-  removed_dissipated_ = s.removed_dissipated;
-  edited_energy_ = s.edited_energy;
+  ledger_ = s;
   added_since_sort_ = s.added_since_sort;
-  if (b.empty()) reset_owner_blocks();
-  else block_first_ = b;
   particles_changed_ = false;
   skin_ = opt_.skin_over_min_radius * *std::min_element(p_.radius.begin(), p_.radius.end());
   stable_dt_ = compute_stable_dt();
@@ -99,84 +77,17 @@ void DemSystem::restore_state(const DemState& s) {
     }
   }
 
-  attach_contact_history(s);
+  restore_network(net_, s, n, walls_.size(), opt_.owner_block);
 }
 
 ContactHistory DemSystem::contact_history() const {
-  ContactHistory h;
-  if (pairs_.first.size() == p_.size() + 1) {  // else no list yet (or edited particles)
-    for (std::size_t k = 0; k < pairs_.size(); ++k) {
-      if (!stored(pairs_.history[k])) continue;
-      h.pair_i.push_back(pairs_.i[k]);
-      h.pair_j.push_back(pairs_.j[k]);
-      h.pair_history.push_back(pairs_.history[k]);
-    }
-  }
-  const auto n_slots = walls_.size();
-  if (wall_first_.size() == n_slots + 1) {
-    for (std::size_t w = 0; w < n_slots; ++w)
-      for (int c = wall_first_[w]; c < wall_first_[w + 1]; ++c) {
-        if (!stored(wall_history_[c])) continue;
-        h.wall_slot.push_back(static_cast<int>(w));
-        h.wall_particle.push_back(wall_particle_[c]);
-        h.wall_history.push_back(wall_history_[c]);
-      }
-  }
-  return h;
-}
-
-void DemSystem::check_contact_history(const ContactHistory& s, std::size_t n) const {
-  const std::size_t n_pairs = s.pair_i.size();
-  if (s.pair_j.size() != n_pairs || s.pair_history.size() != n_pairs)
-    bad_state("pair histories: i, j and history differ in length");
-  for (std::size_t k = 0; k < n_pairs; ++k) {
-    const int i = s.pair_i[k], j = s.pair_j[k];
-    const bool ordered = k == 0 || i > s.pair_i[k - 1] || (i == s.pair_i[k - 1] && j > s.pair_j[k - 1]);
-    if (!(i >= 0 && i < j && j < static_cast<int>(n) && ordered))
-      bad_state("pair histories must be sorted pairs i < j of existing particles");
-  }
-  const auto n_slots = walls_.size();
-  const std::size_t n_wall = s.wall_slot.size();
-  if (s.wall_particle.size() != n_wall || s.wall_history.size() != n_wall)
-    bad_state("wall histories: slot, particle and history differ in length");
-  for (std::size_t c = 0; c < n_wall; ++c) {
-    const int w = s.wall_slot[c], q = s.wall_particle[c];
-    const bool ordered = c == 0 || w > s.wall_slot[c - 1] ||
-                         (w == s.wall_slot[c - 1] && q > s.wall_particle[c - 1]);
-    if (!(w >= 0 && w < static_cast<int>(n_slots) && q >= 0 && q < static_cast<int>(n) && ordered))
-      bad_state("wall histories must be sorted by (wall, particle) and name existing ones");
-  }
-}
-
-void DemSystem::attach_contact_history(const ContactHistory& s) {
-  const std::size_t n = p_.size();
-  const auto n_slots = walls_.size();
-  // The histories become the "previous" lists of the next rebuild, which carries them by key.
-  PairList old;
-  old.first.assign(n + 1, 0);
-  for (int i : s.pair_i) ++old.first[static_cast<std::size_t>(i) + 1];
-  for (std::size_t q = 0; q < n; ++q) old.first[q + 1] += old.first[q];
-  old.i = s.pair_i;
-  old.j = s.pair_j;
-  old.history = s.pair_history;
-  pairs_ = std::move(old);
-  pair_out_.resize(pairs_.size(), 0);  // all inactive; slots sized by the coming rebuild
-  wall_first_.assign(n_slots + 1, 0);
-  for (int w : s.wall_slot) ++wall_first_[static_cast<std::size_t>(w) + 1];
-  for (std::size_t w = 0; w < n_slots; ++w) wall_first_[w + 1] += wall_first_[w];
-  wall_particle_ = s.wall_particle;
-  wall_history_ = s.wall_history;
-  wall_out_.resize(wall_particle_.size(), wall_particle_.size());
-  wall_normal_.assign(wall_particle_.size(), 0.0);
-  wall_elastic_normal_.assign(wall_particle_.size(), 0.0);
-  list_valid_ = false;  // rebuilt (with the carry above) at the next force evaluation
-  max_disp2_ = 0;
+  return dem::contact_history(net_, p_.size(), walls_.size());
 }
 
 void DemSystem::seed_contact_history(const ContactHistory& h) {
   if (pending_dt_ > 0) throw std::logic_error("DemSystem::seed_contact_history inside a step");
-  check_contact_history(h, p_.size());
-  attach_contact_history(h);
+  check_contact_history(h, p_.size(), walls_.size());
+  attach_contact_history(net_, h, p_.size(), walls_.size());
   forces_valid_ = false;
 }
 

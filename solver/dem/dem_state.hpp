@@ -20,25 +20,22 @@
 #include <vector>
 
 #include "core/specimen_coupling.hpp"
-#include "dem/contact_history.hpp"
+#include "dem/contact_network.hpp"
+#include "dem/energy_ledger.hpp"
 #include "dem/particles.hpp"
 #include "dem/vec3.hpp"
 
 namespace kolsky::dem {
 
-/// The tangential histories of pair and wall contacts are the ContactHistory part.
-struct DemState : ContactHistory {
+/// Each component's fields are its own: the contact network's (tangential histories of pair
+/// and wall contacts by key, owner blocks, rebuild count) are the ContactNetworkState part
+/// (contact_network.hpp, save_network / restore_network), the energy ledger's (per-grain
+/// dissipation, what removed grains dissipated, what edits took out) the EnergyLedger part.
+struct DemState : ContactNetworkState, EnergyLedger {
   Particles particles;              ///< every field: x, v, omega, f, torque, radius, mass, ...
-  std::vector<double> dissipated;   ///< per particle, J
   double time = 0;                  ///< s
   double pending_dt = 0;            ///< > 0: begin_step done, finish_step pending (s)
   bool forces_valid = false;        ///< particles.f/torque hold the current state's forces
-  std::size_t n_rebuilds = 0;       ///< bookkeeping only (restored, then counts on)
-  /// Owner blocks (DemSystem::block_first); empty: the uniform blocks of a fresh system (a
-  /// checkpoint written before particle edits existed).
-  std::vector<int> owner_blocks;
-  double removed_dissipated = 0;    ///< dissipation of grains edits removed, J
-  double edited_energy = 0;         ///< DemEnergy::edited, J
   std::size_t added_since_sort = 0; ///< grains edits added since the last locality sort
 
   struct Plane {

@@ -1,41 +1,25 @@
-// DemSystem: construction, walls, time stepping, neighbour-list upkeep, energies and the
-// stable time step (see dem_system.hpp). The contact kernels live in dem_forces.cpp.
+// DemSystem: construction, walls, time stepping, neighbour-list upkeep and the stable time
+// step (see dem_system.hpp). The contact kernels live in contact_forces*.cpp.
 #include "dem/dem_system.hpp"
 
 #include <algorithm>
-#include <atomic>
-#include <chrono>
 #include <cmath>
-#include <numbers>
 #include <limits>
-#include <sstream>
+#include <numeric>
 #include <stdexcept>
-
-#include <omp.h>
 
 #include "core/errors.hpp"
 #include "core/stability_check.hpp"
+#include "dem/contact_forces.hpp"
 #include "dem/contact_hertz_mindlin.hpp"
 #include "dem/integrator.hpp"
 
 namespace kolsky::dem {
 
-double RollingRetardation::factor(double dt) const {
-  if (factor_per_reference_step == 1.0 || factor_per_reference_step == 0.0)
-    return factor_per_reference_step;
-  return std::pow(factor_per_reference_step, dt / reference_dt);
-}
-
-void DemSystem::ContactStore::resize(std::size_t n, std::size_t n_slots) {
-  out.assign(n_slots, ContactOut{});
-  active.assign(n, 0);
-  elastic.assign(n, 0.0);
-}
-
 DemSystem::DemSystem(Particles particles, std::vector<Material> materials, ContactLaw law,
                      DemOptions options)
     : p_(std::move(particles)), materials_(std::move(materials)), law_(std::move(law)),
-      opt_(options) {
+      opt_(options), exec_(options.adapt_threads, options.governor) {
   validate(materials_);
   validate(p_, materials_.size());
   if (p_.size() == 0) throw InputError("", "dem.particles", "at least one particle is needed");
@@ -58,16 +42,9 @@ DemSystem::DemSystem(Particles particles, std::vector<Material> materials, Conta
   if (!(opt_.rolling.reference_dt > 0))
     throw InputError("", "dem.rolling.reference_dt", "must be > 0");
   skin_ = opt_.skin_over_min_radius * *std::min_element(p_.radius.begin(), p_.radius.end());
-  dissipated_.assign(p_.size(), 0.0);
-  reset_owner_blocks();
+  ledger_.dissipated.assign(p_.size(), 0.0);
+  net_.block_first = uniform_owner_blocks(p_.size(), opt_.owner_block);
   stable_dt_ = compute_stable_dt();
-}
-
-void DemSystem::reset_owner_blocks() {
-  const int n = static_cast<int>(p_.size()), block = opt_.owner_block;
-  block_first_.clear();
-  for (int i0 = 0; i0 < n; i0 += block) block_first_.push_back(i0);
-  block_first_.push_back(n);
 }
 
 // A new plane goes in at the end of the planes, before the cylinders (the slot rule); the
@@ -75,18 +52,16 @@ void DemSystem::reset_owner_blocks() {
 int DemSystem::add_plane(const PlaneWall& w) {
   walls_.insert(walls_.begin() + n_planes_, make_wall(w));
   ++n_planes_;
-  wall_particle_.clear();
-  wall_first_.clear();
-  list_valid_ = forces_valid_ = false;
+  forget_wall_contacts(net_);
+  net_.valid = forces_valid_ = false;
   stable_dt_ = compute_stable_dt();
   return n_planes_ - 1;
 }
 
 int DemSystem::add_cylinder(const CylinderWall& w) {
   walls_.push_back(make_wall(w));
-  wall_particle_.clear();
-  wall_first_.clear();
-  list_valid_ = forces_valid_ = false;
+  forget_wall_contacts(net_);
+  net_.valid = forces_valid_ = false;
   stable_dt_ = compute_stable_dt();
   return n_cylinders() - 1;
 }
@@ -111,7 +86,7 @@ void DemSystem::drive_cylinder(int cylinder, WallProfile profile) {
 }
 
 Particles& DemSystem::mutable_particles() {
-  list_valid_ = forces_valid_ = false;
+  net_.valid = forces_valid_ = false;
   particles_changed_ = true;
   return p_;
 }
@@ -120,11 +95,8 @@ void DemSystem::refresh_after_edit() {
   // Radii, masses or the particle count may have changed: revalidate and rederive.
   validate(p_, materials_.size());
   skin_ = opt_.skin_over_min_radius * *std::min_element(p_.radius.begin(), p_.radius.end());
-  dissipated_.resize(p_.size(), 0.0);
-  if (pairs_.first.size() != p_.size() + 1) pairs_ = PairList{};
-  if (block_first_.back() != static_cast<int>(p_.size())) reset_owner_blocks();
-  wall_particle_.clear();
-  wall_first_.clear();
+  ledger_.dissipated.resize(p_.size(), 0.0);
+  reset_for_particles(net_, p_.size(), opt_.owner_block);
   stable_dt_ = compute_stable_dt();
   particles_changed_ = false;
 }
@@ -176,65 +148,31 @@ void DemSystem::step(double dt) {
   finish_step();
 }
 
-namespace {
-using Clock = std::chrono::steady_clock;
-double seconds_since(Clock::time_point t0) {
-  return std::chrono::duration<double>(Clock::now() - t0).count();
-}
-
-// The last count chosen by any DemSystem's governor in this process (0: none yet), the start of
-// the next governor (ThreadGovernorOptions::start_threads). Only the speed depends on it.
-std::atomic<int> g_last_step_threads{0};
-
-}  // namespace
-
-int DemSystem::threads_for_step() {
-  const int cap = omp_get_max_threads();
-  if (!opt_.adapt_threads || cap <= 1) return cap;
-  if (governor_.max_threads() != cap) {
-    ThreadGovernorOptions o = opt_.governor;
-    if (o.start_threads == 0) o.start_threads = g_last_step_threads.load(std::memory_order_relaxed);
-    governor_ = ThreadGovernor(cap, o);
-  }
-  return governor_.threads();
-}
-
 void DemSystem::begin_step(double dt) {
   if (particles_changed_) refresh_after_edit();
   check_dt(dt);
   if (pending_dt_ > 0) finish_step();
-  step_threads_ = threads_for_step();
-  const ScopedThreads scope(step_threads_);
-  const auto t0 = Clock::now();
-  if (!forces_valid_) compute_forces(0.0);
-  kick_drift(0.5 * dt, dt);
-  time_ += dt;
-  pending_dt_ = dt;
-  step_seconds_ = seconds_since(t0);
+  exec_.first_half([&] {
+    if (!forces_valid_) compute_forces(0.0);
+    kick_drift(0.5 * dt, dt);
+    time_ += dt;
+    pending_dt_ = dt;
+  });
 }
 
 void DemSystem::finish_step() {
-  const ScopedThreads scope(step_threads_);
-  const auto t0 = Clock::now();
-  const double dt = pending_dt_;
-  compute_forces(dt);
-  kick_retard(0.5 * dt, dt);
-  pending_dt_ = 0;
-  // Only the DEM's own work is timed: what the caller does between steps (bars, output)
-  // does not depend on this choice and would only add noise to the comparison.
-  if (step_threads_ > 0 && opt_.adapt_threads && governor_.max_threads() > 1) {
-    const long switches = governor_.switches();
-    governor_.record(step_seconds_ + seconds_since(t0));
-    if (governor_.switches() != switches)
-      g_last_step_threads.store(governor_.threads(), std::memory_order_relaxed);
-  }
-  step_threads_ = 0;
+  exec_.second_half([&] {
+    const double dt = pending_dt_;
+    compute_forces(dt);
+    kick_retard(0.5 * dt, dt);
+    pending_dt_ = 0;
+  });
 }
 
 // The grains by the integrator (integrator.hpp), then the walls: a compliant ring's half
 // kick, then each wall's drift (wall.hpp; the walls do not interact, so one pass does both).
 void DemSystem::kick_drift(double h, double dt) {
-  max_disp2_ = dem::kick_drift(p_, h, dt, list_valid_ ? x_at_build_.data() : nullptr, max_disp2_);
+  net_.max_disp2 = dem::kick_drift(p_, h, dt, net_.valid ? net_.x_at_build.data() : nullptr, net_.max_disp2);
   for (Wall& w : walls_) {
     kick(w, h);
     drift(w, time_, dt);
@@ -243,110 +181,54 @@ void DemSystem::kick_drift(double h, double dt) {
 
 // Second half kick and the rotational retardation (Eqs. 4.12-4.14) of the grains, then the rings.
 void DemSystem::kick_retard(double h, double dt) {
-  dem::kick_retard(p_, h, opt_.rolling.factor(dt), dissipated_);
+  dem::kick_retard(p_, h, opt_.rolling.factor(dt), ledger_.dissipated);
   for (Wall& w : walls_) kick(w, h);
 }
 
-bool DemSystem::needs_rebuild() const {
-  if (!list_valid_) return true;
-  const double half = 0.5 * skin_;
-  if (max_disp2_ > half * half) return true;
-  return std::any_of(walls_.begin(), walls_.end(), [half](const Wall& w) { return moved_since_build(w) > half; });
+void DemSystem::compute_forces(double dt) {
+  if (particles_changed_) refresh_after_edit();
+  if (needs_rebuild(net_, skin_, walls_)) rebuild();
+  evaluate_contacts(net_, p_, ledger_.dissipated, law_, opt_.batched_hertz_mindlin, walls_, dt);
+  forces_valid_ = true;
 }
 
 void DemSystem::rebuild() {
-  pairs_ = build_pair_list(p_.x, p_.radius, skin_, pairs_);
-  build_wall_candidates();
-  const int n = static_cast<int>(p_.size());
-  // Counting sort into slots, by partner (then pair order), of the pairs whose partner lies in
-  // another owner block; a partner in the owner's block gets its side in the sweep (slot -1).
-  partner_first_.assign(static_cast<std::size_t>(n) + 1, 0);
-  std::vector<int> block_of(static_cast<std::size_t>(n));
-  for (std::size_t b = 0; b + 1 < block_first_.size(); ++b)
-    std::fill(block_of.begin() + block_first_[b], block_of.begin() + block_first_[b + 1], static_cast<int>(b));
-  auto crosses = [&](std::size_t k) { return block_of[pairs_.i[k]] != block_of[pairs_.j[k]]; };
-  for (std::size_t k = 0; k < pairs_.size(); ++k)
-    if (crosses(k)) ++partner_first_[pairs_.j[k] + 1];
-  for (int q = 0; q < n; ++q) partner_first_[q + 1] += partner_first_[q];
-  pair_slot_.resize(pairs_.size());
-  std::vector<int> fill(partner_first_.begin(), partner_first_.end() - 1);
-  for (std::size_t k = 0; k < pairs_.size(); ++k)
-    pair_slot_[k] = crosses(k) ? fill[pairs_.j[k]]++ : -1;
-  pair_out_.resize(pairs_.size(), static_cast<std::size_t>(partner_first_[n]));
-  // A carried non-zero history counts as active: the batched sweep clears the history of a
-  // pair only when it goes from active to not touching (dem_forces_batched.cpp). The slots
-  // stay zero; every evaluation rewrites active[] before anything reads it.
-  for (std::size_t k = 0; k < pairs_.size(); ++k) {
-    const Vec3& h = pairs_.history[k];
-    pair_out_.active[k] = h.x != 0 || h.y != 0 || h.z != 0;
-  }
-  wall_first_of_.assign(static_cast<std::size_t>(n) + 1, 0);
-  for (int q : wall_particle_) ++wall_first_of_[q + 1];
-  for (int q = 0; q < n; ++q) wall_first_of_[q + 1] += wall_first_of_[q];
-  wall_entry_.resize(wall_particle_.size());
-  fill.assign(wall_first_of_.begin(), wall_first_of_.end() - 1);
-  for (std::size_t c = 0; c < wall_particle_.size(); ++c)
-    wall_entry_[fill[wall_particle_[c]]++] = static_cast<int>(c);
-  x_at_build_ = p_.x;
-  max_disp2_ = 0;
+  dem::rebuild(net_, p_, walls_, skin_);
   for (Wall& w : walls_) mark_built(w);
-  list_valid_ = true;
-  ++n_rebuilds_;
 }
 
-void DemSystem::build_wall_candidates() {
-  const auto n_slots = walls_.size();  // by slot (walls.hpp, WallSlots)
-  std::vector<int> particle, first(n_slots + 1, 0);
-  std::vector<Vec3> history;
-  const bool carry = wall_first_.size() == n_slots + 1;
-  for (std::size_t w = 0; w < n_slots; ++w) {
-    std::size_t a = carry ? wall_first_[w] : 0;
-    const std::size_t a_end = carry ? wall_first_[w + 1] : 0;
-    for (std::size_t i = 0; i < p_.size(); ++i) {
-      // The candidates' round-off need not be the kernel's: only touching contacts give forces.
-      if (gap_at(walls_[w], p_.x[i], p_.radius[i]) >= skin_) continue;
-      particle.push_back(static_cast<int>(i));
-      Vec3 h{};
-      while (a < a_end && wall_particle_[a] < static_cast<int>(i)) ++a;
-      if (a < a_end && wall_particle_[a] == static_cast<int>(i)) h = wall_history_[a];
-      history.push_back(h);
-    }
-    first[w + 1] = static_cast<int>(particle.size());
+// The facade's edit (particle_edit.hpp does the carrying): energies booked against evaluated
+// forces before and after, as begin_step would evaluate them first.
+EditMap DemSystem::edit(const ParticleEdit& e) {
+  if (pending_dt_ > 0) throw std::logic_error("DemSystem::edit between begin_step and finish_step");
+  if (particles_changed_) refresh_after_edit();
+  std::vector<int> old_to_new = edit_index_map(e, p_.size(), materials_.size());
+  const std::size_t n_kept = p_.size() - e.removed.size();
+  if (!forces_valid_) compute_forces(0.0);
+  const DemEnergy before = energy();
+  bool contacts_change = apply_edit(p_, net_, ledger_, walls_.size(), e, old_to_new, opt_.owner_block);
+  skin_ = opt_.skin_over_min_radius * *std::min_element(p_.radius.begin(), p_.radius.end());
+  stable_dt_ = compute_stable_dt();
+  if (!contacts_change) contacts_change = added_grains_touch(p_, walls_, n_kept, skin_);
+  // A contact gained or lost: evaluate now, as begin_step would first (history unchanged, no
+  // time advance), so the stored energy the edit moved is booked exactly. Otherwise the
+  // survivors' forces and stored energies stand as they are.
+  if (contacts_change) compute_forces(0.0);
+  book_edit(ledger_, before, energy());
+
+  added_since_sort_ += e.added.size();
+  EditMap map{std::move(old_to_new), std::vector<int>(e.added.size())};
+  std::iota(map.added_at.begin(), map.added_at.end(), static_cast<int>(n_kept));
+  if (opt_.resort_added_fraction > 0 &&
+      static_cast<double>(added_since_sort_) > opt_.resort_added_fraction * static_cast<double>(p_.size())) {
+    const std::vector<int> sorted = resort_for_locality(p_, net_, ledger_, walls_.size(), opt_.owner_block);
+    added_since_sort_ = 0;
+    ++n_resorts_;
+    for (int& q : map.old_to_new)
+      if (q >= 0) q = sorted[static_cast<std::size_t>(q)];
+    for (int& q : map.added_at) q = sorted[static_cast<std::size_t>(q)];
   }
-  wall_particle_.swap(particle);
-  wall_first_.swap(first);
-  wall_history_.swap(history);
-  wall_out_.resize(wall_particle_.size(), wall_particle_.size());
-  wall_normal_.resize(wall_particle_.size());
-  wall_elastic_normal_.resize(wall_particle_.size());
-}
-
-DemEnergy DemSystem::energy() const {
-  DemEnergy e;
-  e.kinetic = p_.kinetic_energy();
-  for (double u : pair_out_.elastic) e.elastic += u;  // pair order; zero where not touching
-  for (std::size_t c = 0; c < wall_particle_.size(); ++c)
-    if (wall_out_.active[c]) e.elastic += wall_out_.out[c].elastic;
-  // A ring's energies and a plane's work; the zeros the other shapes add change no sum (a
-  // sum of these terms is never -0).
-  for (const Wall& w : walls_) {
-    const WallEnergy we = energy_of(w);
-    e.kinetic += we.kinetic;
-    e.elastic += we.elastic;
-    e.wall_work += we.work;
-  }
-  for (double d : dissipated_) e.dissipated += d;
-  e.dissipated += removed_dissipated_;
-  e.edited = edited_energy_;
-  return e;
-}
-
-std::size_t DemSystem::n_contacts() const {
-  return static_cast<std::size_t>(std::count(pair_out_.active.begin(), pair_out_.active.end(), 1));
-}
-
-std::size_t DemSystem::n_wall_contacts() const {
-  return static_cast<std::size_t>(std::count(wall_out_.active.begin(), wall_out_.active.end(), 1));
+  return map;
 }
 
 bool DemSystem::finite() const {

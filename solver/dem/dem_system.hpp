@@ -1,11 +1,14 @@
-// A DEM assembly: particles (struct of arrays), one grain-grain contact law, walls (wall.hpp:
-// planes and cylinders, one concept), a Verlet pair list, and the explicit integrator: velocity
-// Verlet (kick-drift-kick; dashpots see mid-step velocities, as in LIGGGHTS), then rotational
-// retardation w <- k w, Eqs. 4.12-4.14, with k_run = k_ref^(dt/dt_ref) (0.99999975 per 1 ns,
-// Sec. 4.3). Each contact
-// is computed once and gathered per particle in a fixed order, so results are bitwise the same
-// for any OpenMP thread count. Stable dt = safety x min(Rayleigh step of the smallest grain,
-// sqrt(m/k) of the stiffest linear contact, tube ring mode). Details: docs/dem.md.
+// A DEM assembly as a facade over its components (issue 32; docs/architecture.md draws them):
+// particles (particles.hpp), the contact network (contact_network.hpp), the energy ledger
+// (energy_ledger.hpp), the walls (wall.hpp: planes and cylinders, one concept), the grain law
+// (contact_law.hpp) and the step executor (time/step_executor.hpp: the thread count). It keeps
+// what ties them together (options, time, the step in progress, skin, stable dt) and steps
+// them: velocity Verlet (kick-drift-kick; dashpots see mid-step velocities, as in LIGGGHTS),
+// then rotational retardation w <- k w, Eqs. 4.12-4.14 (integrator.hpp), with one force
+// evaluation between (contact_forces.hpp). Each contact is computed once and gathered per
+// particle in a fixed order, so results are bitwise the same for any OpenMP thread count.
+// Stable dt = min(Rayleigh step of the smallest grain, sqrt(m/k) of the stiffest linear
+// contact, tube ring mode); the stepping loop applies its safety factor. Details: docs/dem.md.
 #pragma once
 #include <algorithm>
 #include <cstddef>
@@ -14,25 +17,19 @@
 
 #include "dem/contact_history.hpp"
 #include "dem/contact_law.hpp"
+#include "dem/contact_network.hpp"
+#include "dem/energy_ledger.hpp"
+#include "dem/integrator.hpp"
 #include "dem/neighbour_list.hpp"
+#include "dem/particle_edit.hpp"
 #include "dem/particles.hpp"
-#include "dem/thread_governor.hpp"
 #include "dem/wall.hpp"
 #include "dem/walls.hpp"
+#include "time/step_executor.hpp"
 
 namespace kolsky::dem {
 
-struct DemState;               // dem_state.hpp: checkpoint/restart state
-struct HertzMindlinConstants;  // hertz_mindlin_batch.hpp
-
-/// Rotational resistance by angular-velocity retardation, Eqs. 4.12-4.14.
-struct RollingRetardation {
-  double factor_per_reference_step = 1.0;  ///< k_lambda^zeta per reference step (1: none), -
-  double reference_dt = 1e-9;              ///< step the factor was given for, s
-
-  /// k_run = k_ref^(dt / dt_ref); 0 stays 0 (full restraint), 1 stays 1.
-  double factor(double dt) const;
-};
+struct DemState;  // dem_state.hpp: checkpoint/restart state
 
 struct DemOptions {
   double skin_over_min_radius = 0.5;  ///< Verlet skin as a multiple of the smallest radius
@@ -59,14 +56,14 @@ struct DemOptions {
   /// covers a grain of this radius of every material from the start, so the step fixed when
   /// the run is planned stays stable as grains break (docs/breakage.md). 0: the grains present.
   double smallest_radius_to_come = 0.0;
-  /// step() (begin_step, finish_step) chooses between one thread and the caller's OpenMP
-  /// count from the step rate it measures (thread_governor.hpp): two threads beside a busy
-  /// core are slower than one under any wait policy. Results do not depend on it (they are
-  /// bitwise the same for any thread count); false: always the caller's count (benchmarks
-  /// that measure a fixed count).
+  /// step() (begin_step, finish_step) runs through an executor (time/step_executor.hpp) that
+  /// chooses between one thread and the caller's OpenMP count from the step rate it measures
+  /// (time/thread_governor.hpp): two threads beside a busy core are slower than one under any
+  /// wait policy. Results do not depend on it (they are bitwise the same for any thread
+  /// count); false: always the caller's count (benchmarks that measure a fixed count).
   bool adapt_threads = true;
-  /// Window, probe interval and margin of that choice (thread_governor.hpp).
-  ThreadGovernorOptions governor;
+  /// Window, probe interval and margin of that choice (time/thread_governor.hpp).
+  time_loop::ThreadGovernorOptions governor;
 };
 
 /// The fraction of stable_dt() at which kolsky's own DEM loops step (packing, pre-stress,
@@ -76,34 +73,6 @@ struct DemOptions {
 /// keep their bits. A scene run applies time.safety_factor instead (0.5 x this by default for
 /// a DEM specimen).
 inline constexpr double kDemStepFraction = 0.3;
-
-/// One particle edit (a grain replaced by its fragments, Sec. 5.2.3): remove the grains
-/// `removed` (indices, unique, any order), then append `added` (positions, velocities, spins,
-/// radii, materials, masses and inertias; their forces are ignored). Survivors keep their
-/// order, added grains follow them (unless the edit triggers a locality re-sort).
-struct ParticleEdit {
-  std::vector<int> removed;
-  Particles added;
-};
-
-/// Where an edit put every grain: old_to_new[i] = the new index of old grain i (-1: removed),
-/// added_at[k] = the new index of added grain k.
-struct EditMap {
-  std::vector<int> old_to_new, added_at;
-};
-
-/// Energy ledger (J). kinetic + elastic + dissipated - wall_work is conserved up to the
-/// integration error (and the non-potential part of Mindlin's overlap-dependent k_t).
-struct DemEnergy {
-  double kinetic = 0;     ///< particles (translation + rotation) and the tube's radial mode
-  double elastic = 0;     ///< contact springs and the tube's hoop spring
-  double dissipated = 0;  ///< dashpots, sliding, rolling friction and rolling retardation
-  double wall_work = 0;   ///< work done by moving planes on the particles
-  /// Energy taken out by particle edits: the removed grains' kinetic energy and the energy
-  /// stored in their contacts, minus the added grains' kinetic and contact energy (J). So
-  /// kinetic + elastic + dissipated + edited - wall_work stays conserved across edits.
-  double edited = 0;
-};
 
 class DemSystem {
  public:
@@ -133,9 +102,7 @@ class DemSystem {
   /// last force evaluation, in candidate (particle) order: the contact forces a deformable
   /// wall's owner maps back onto its surface (the wall feels minus them).
   template <class F> void for_each_wall_force(int slot, F&& f) const {
-    if (!forces_valid_ || wall_first_.size() <= static_cast<std::size_t>(slot) + 1) return;
-    for (int c = wall_first_[slot]; c < wall_first_[slot + 1]; ++c)
-      if (wall_out_.active[c]) f(wall_particle_[c], wall_out_.out[c].force);
+    if (forces_valid_) dem::for_each_wall_force(net_, slot, f);
   }
 
   /// Largest dt step() accepts (s): the raw limit, min over the Rayleigh step of the smallest
@@ -159,7 +126,7 @@ class DemSystem {
   /// force evaluation revalidates, rederives skin and stable dt, and rebuilds the lists.
   /// Changing the count this way drops every contact history; edit() keeps them.
   Particles& mutable_particles();
-  /// Removes and adds grains between two steps (dem_edit.cpp), carrying what survives: the
+  /// Removes and adds grains between two steps (particle_edit.hpp), carrying what survives: the
   /// tangential histories of pairs and wall contacts whose grains both remain, every
   /// per-particle array, the forces, and the owner-block partition (each surviving grain
   /// stays in its block, so its sums keep their order). A grain removed with touching
@@ -172,7 +139,7 @@ class DemSystem {
   /// between begin_step() and finish_step().
   EditMap edit(const ParticleEdit& e);
   /// Owner blocks as index ranges [block_first()[b], block_first()[b+1]) (DemOptions::owner_block).
-  const std::vector<int>& block_first() const { return block_first_; }
+  const std::vector<int>& block_first() const { return net_.block_first; }
   /// How many locality re-sorts (DemOptions::resort_added_fraction) edits have triggered.
   std::size_t n_resorts() const { return n_resorts_; }
   /// Sets every grain's velocity and spin (and a compliant tube's radial speed) to zero
@@ -202,21 +169,24 @@ class DemSystem {
   double cylinder_force(int k) const { return walls_[wall_slots().slot(WallKind::cylinder, k)].force; }
   double cylinder_displacement(int k) const { return cylinder_at(k).u; }
 
-  DemEnergy energy() const;
+  /// The energy ledger's reading (energy_ledger.hpp).
+  DemEnergy energy() const { return dem::energy(ledger_, p_, net_, walls_); }
   /// Every touching contact of the last force evaluation, pairs first (in pair order), then
-  /// wall contacts (in slot, particle order): one serial pass over the contact flags the sweep
-  /// wrote. Nothing between an edit or restore and the next evaluation. Defined in
-  /// dem_contacts.hpp; calls pair(i, j, x_j - x_i, |x_j - x_i|) for grain pairs (i < j by pair
-  /// order) and wall(i, slot, unit normal towards the wall, overlap, elastic normal force: the
-  /// wall law's spring without its dashpot, as a grain pair's Hertz force; slot by the
-  /// WallSlots rule).
-  template <class Pair, class OnWall> void for_each_touching_contact(Pair&& pair, OnWall&& wall) const;
-  std::size_t n_pairs() const { return pairs_.size(); }
-  std::size_t n_contacts() const;       ///< touching grain pairs
-  std::size_t n_wall_contacts() const;  ///< touching grain-wall contacts
-  std::size_t n_rebuilds() const { return n_rebuilds_; }
+  /// wall contacts (in slot, particle order): contact_network.hpp, for_each_touching_contact
+  /// (the elastic normal force it passes for a wall is the wall law's spring without its
+  /// dashpot, as a grain pair's Hertz force). Nothing between an edit or restore and the next
+  /// evaluation.
+  template <class Pair, class OnWall> void for_each_touching_contact(Pair&& pair, OnWall&& wall) const {
+    if (forces_valid_) dem::for_each_touching_contact(net_, p_, walls_, pair, wall);
+  }
+  /// The contact network (contact_network.hpp): lists, owner blocks, histories, outputs.
+  const ContactNetwork& network() const { return net_; }
+  std::size_t n_pairs() const { return net_.pairs.size(); }
+  std::size_t n_contacts() const { return n_touching_pairs(net_); }              ///< touching grain pairs
+  std::size_t n_wall_contacts() const { return n_touching_wall_contacts(net_); }  ///< touching grain-wall contacts
+  std::size_t n_rebuilds() const { return net_.n_rebuilds; }
   /// The thread-count choice of step() (DemOptions::adapt_threads): probes and switches.
-  const ThreadGovernor& thread_governor() const { return governor_; }
+  const time_loop::ThreadGovernor& thread_governor() const { return exec_.governor(); }
   double skin() const { return skin_; }
   bool finite() const;
 
@@ -236,143 +206,37 @@ class DemSystem {
   void seed_contact_history(const ContactHistory& h);
 
  private:
-  // Loops shorter than this run on one thread: a parallel region costs microseconds, which
-  // would dominate the one- and two-particle verification runs.
-  static constexpr std::ptrdiff_t kParallelMin = 2048;
-  // Wall contacts per chunk handed to a free thread (compute_forces): small enough to even out
-  // the threads' sweeps, large enough that taking a chunk (one atomic) costs nothing.
-  static constexpr int kWallChunk = 256;
-
   Wall& wall_of(WallKind kind, int k);  // drive_*: checked
   const Plane& plane_at(int k) const { return std::get<Plane>(walls_[wall_slots().slot(WallKind::plane, k)].shape); }
   const Cylinder& cylinder_at(int k) const {
     return std::get<Cylinder>(walls_[wall_slots().slot(WallKind::cylinder, k)].shape);
   }
-  // Per-contact outputs. ContactOut is what the gathering particle receives (for a pair: the
-  // partner j, since i sums its own side while computing; for a wall: the grain), and the
-  // contact's stored energy: one 64-byte cache line per contact, so that the scattered store
-  // of a pair's partner side touches one line, not two or three.
-  struct alignas(64) ContactOut {
-    Vec3 force, torque;
-    double dissipated = 0;
-    double elastic = 0;
-  };
-  // For walls, active[c] flags a touching contact c. For pairs, active[k] and elastic[k] (the
-  // stored energy; out[].elastic stays 0) are indexed by pair (written in order while the
-  // owners are swept), and the slots and energies of pairs that do not touch hold zeros
-  // (cleared when a contact separates, and at every rebuild), so that gather() and energy()
-  // add every one without a branch: adding +0 to a sum that started at +0 leaves it bitwise
-  // unchanged (such a sum is never -0). For pairs, out holds the cross-block slots only.
-  struct ContactStore {
-    std::vector<ContactOut> out;
-    std::vector<unsigned char> active;
-    std::vector<double> elastic;  // pairs only
-    // n contacts (active, elastic), n_slots outputs (out); all inactive, all zero.
-    void resize(std::size_t n, std::size_t n_slots);
-  };
-
-  // Raw views of what the two pair kernels (dem_forces.cpp, dem_forces_batched.cpp) read and
-  // write, with the two steps they must do alike so that both keep one summation order.
-  struct PairArrays {
-    const int *first, *pi, *pj, *slot, *mat;
-    const Vec3 *x, *v, *w;
-    const double *rad, *mass;
-    Vec3 *hist, *f, *tq;
-    double *diss, *stored;
-    ContactOut* out;
-    unsigned char* active;
-    const int* block_first;  // owner block b: grains [block_first[b], block_first[b+1])
-    int n, n_blocks;         // grains, blocks
-
-    /// Partner j's side of touching pair k (force on i, torque on j, half the dissipation):
-    /// added to j now when j is in the owner's block (slot -1: the partner's owners all come
-    /// in pair order before j's own sum), else stored in j's slot for gather(); and the
-    /// pair's stored energy.
-    void partner_side(int k, int j, const Vec3& force_i, const Vec3& torque_j,
-                      double half_dissipated, double elastic) const {
-      const int sk = slot[k];
-      if (sk < 0) {
-        f[j] += -force_i;
-        tq[j] += torque_j;
-        diss[j] += half_dissipated;
-      } else {
-        out[sk] = {-force_i, torque_j, half_dissipated, 0.0};
-      }
-      stored[k] = elastic;
-    }
-    /// Pair k stopped touching: its slot and stored energy read zero again.
-    void separated(int k) const {
-      if (slot[k] >= 0) out[slot[k]] = ContactOut{};
-      stored[k] = 0;
-    }
-  };
-  PairArrays pair_arrays();
-
+  // Lists rebuilt if needed, then evaluate_contacts (contact_forces.hpp).
   void compute_forces(double dt);
-  template <class Law> void pair_forces(const Law& law, double dt);
-  // dem_forces_batched.cpp; `table`: hertz_mindlin_table() of the law.
-  void hertz_mindlin_pair_forces(const HertzMindlinConstants* table, int n_mat, double dt);
-  // The contacts of wall `slot` (its shape resolved once, outside the loop; dem_forces.cpp).
-  template <class Law, class Shape> void wall_forces(const Law& law, const Shape& shape, int slot, double dt);
-  void gather();
   void kick_drift(double half_dt, double dt);   // begin_step: half kick, then drift
   void kick_retard(double half_dt, double dt);  // finish_step: half kick, then retardation
-  int threads_for_step();                       // the governor's count (or the caller's)
-  void check_contact_history(const ContactHistory& h, std::size_t n_particles) const;
-  void attach_contact_history(const ContactHistory& h);  // the carry of restore / seed
-  bool needs_rebuild() const;
-  void rebuild();
-  void build_wall_candidates();
+  void rebuild();  // the network's, then the walls marked built
   void check_dt(double dt) const;
   double compute_stable_dt() const;
   void refresh_after_edit();
-  void reset_owner_blocks();
-  // dem_edit.cpp: carry the contact lists and per-contact outputs through an index map
-  // (general: a pair whose order flips gets its history negated), and the locality re-sort.
-  void remap_contacts(const std::vector<int>& old_to_new, std::size_t n_new);
-  bool added_grains_touch(std::size_t first_added) const;
-  std::vector<int> resort_for_locality();  // returns old_to_new of the re-sort
 
   Particles p_;
   std::vector<Material> materials_;
   ContactLaw law_;
   DemOptions opt_;
   double skin_ = 0, time_ = 0, pending_dt_ = 0, stable_dt_ = 0;
-  bool list_valid_ = false, forces_valid_ = false, particles_changed_ = false;
-  std::size_t n_rebuilds_ = 0;
-  // The thread count of step(): chosen from the measured wall time of begin_step + finish_step
-  // (opt_.adapt_threads); threads_for_step() rebuilds it when the caller's count changes.
-  ThreadGovernor governor_{1};
-  double step_seconds_ = 0;
-  int step_threads_ = 0;  // the count begin_step chose for this step (0: the caller's)
-  double max_disp2_ = 0;
+  bool forces_valid_ = false, particles_changed_ = false;
+  // The thread count of step(): chosen from the measured wall time of begin_step's and
+  // finish_step's work (opt_.adapt_threads).
+  time_loop::StepExecutor exec_;
 
   // By slot (WallSlots): planes first, so that every loop over walls keeps the order the
   // force sums have always had (planes, then cylinders).
   std::vector<Wall> walls_;
   int n_planes_ = 0;
 
-  PairList pairs_;
-  ContactStore pair_out_;  // indexed by slot (see below)
-  // Wall-contact candidates, grouped by wall slot (planes, then cylinders), sorted by particle.
-  std::vector<int> wall_particle_, wall_first_;
-  std::vector<Vec3> wall_history_;
-  ContactStore wall_out_;
-  std::vector<double> wall_normal_;  // normal force of each wall contact, N
-  std::vector<double> wall_elastic_normal_;  // its elastic part (for_each_touching_contact), N
-  // Gather lists. Pair k whose partner lies in another owner block (DemOptions::owner_block; else
-  // pair_slot_[k] = -1) stores its partner's side in slot pair_slot_[k] of pair_out_; the
-  // slots of particle q are [partner_first_[q], partner_first_[q+1]) (pair order), so the
-  // gather streams through memory. Wall contacts of q: wall_entry_[wall_first_of_[q] ...].
-  std::vector<int> pair_slot_, partner_first_, wall_first_of_, wall_entry_;
-
-  std::vector<Vec3> x_at_build_;
-  std::vector<double> dissipated_;  // per particle, J
-  // Owner blocks (DemOptions::owner_block): uniform at construction and after a re-sort,
-  // carried through edits. Never empty blocks.
-  std::vector<int> block_first_;
-  double removed_dissipated_ = 0;  // dissipation booked by grains an edit removed, J
-  double edited_energy_ = 0;       // DemEnergy::edited, J
+  ContactNetwork net_;
+  EnergyLedger ledger_;
   std::size_t added_since_sort_ = 0, n_resorts_ = 0;
 };
 

@@ -37,7 +37,7 @@ void evaluate(HertzMindlinBatch& b, int count, double dt) {
 void evaluate(HertzMindlinBatch& b, int count, double dt) {
 #endif
   for (int t = 0; t < count; ++t) {
-    // Geometry (dem_forces.cpp): n = d/|d|, delta = r_i + r_j - |d|, levers a = r - delta/2.
+    // Geometry (contact_forces.cpp): n = d/|d|, delta = r_i + r_j - |d|, levers a = r - delta/2.
     const double dx = b.dx[t], dy = b.dy[t], dz = b.dz[t];
     const double ri = b.ri[t], rj = b.rj[t];
     const double rsum = ri + rj;

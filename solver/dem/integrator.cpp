@@ -2,8 +2,15 @@
 #include "dem/integrator.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 namespace kolsky::dem {
+
+double RollingRetardation::factor(double dt) const {
+  if (factor_per_reference_step == 1.0 || factor_per_reference_step == 0.0)
+    return factor_per_reference_step;
+  return std::pow(factor_per_reference_step, dt / reference_dt);
+}
 
 namespace {
 // The half kick of grain i, v += (h/m) f and omega += (h/I) T, over raw pointers so that the

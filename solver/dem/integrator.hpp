@@ -16,6 +16,16 @@ namespace kolsky::dem {
 /// a parallel region costs microseconds, which would dominate the one- and two-grain checks.
 inline constexpr std::ptrdiff_t kIntegratorParallelMin = 2048;
 
+/// Rotational resistance by angular-velocity retardation, Eqs. 4.12-4.14.
+struct RollingRetardation {
+  double factor_per_reference_step = 1.0;  ///< k_lambda^zeta per reference step (1: none), -
+  double reference_dt = 1e-9;              ///< step the factor was given for, s
+
+  /// k_run = k_ref^(dt / dt_ref); 0 stays 0 (full restraint), 1 stays 1 (0.99999975 per 1 ns,
+  /// Sec. 4.3, gives k_run = 0.99999975^(dt / 1 ns)).
+  double factor(double dt) const;
+};
+
 /// Half kick v += (h/m) f, omega += (h/I) T, then drift x += dt v. With x_at_build non-null,
 /// returns the larger of max_disp2 and the largest |x - x_at_build|^2 after the drift (the
 /// neighbour list's displacement test); else returns max_disp2 unchanged.

@@ -1,4 +1,5 @@
-// How many OpenMP threads a DEM loop uses, chosen from the step rate it measures (issue 18).
+// How many OpenMP threads a stepping loop uses, chosen from the step rate it measures (issue 18;
+// the rule of StepExecutor, step_executor.hpp, which DemSystem's steps run through).
 //
 // Why: with one of two cores held by another process, two threads are slower than one under
 // every OpenMP wait policy (pack_35k, 2026-12-02: one thread 10.6 M particle-steps/s; two
@@ -16,14 +17,14 @@
 // tested with made-up timings (verification/test_thread_governor.cpp).
 #pragma once
 
-namespace kolsky::dem {
+namespace kolsky::time_loop {
 
 struct ThreadGovernorOptions {
   int window = 64;                  ///< steps per measurement (several list rebuilds), > 0
   long first_probe = 1024;          ///< steps at the chosen count before the next probe, > 0
   long max_probe_interval = 16384;  ///< the interval doubles after each probe that loses
   double margin = 0.05;             ///< the other count must be this much faster to be chosen
-  /// The count to start from (1 ... max_threads; 0 or out of range: max_threads). DemSystem
+  /// The count to start from (1 ... max_threads; 0 or out of range: max_threads). StepExecutor
   /// passes the last choice of any governor in the process: the load on the machine outlives
   /// one system (a packing's growth, settling and pre-stress, then the test, each have one).
   int start_threads = 0;
@@ -62,8 +63,8 @@ class ThreadGovernor {
 };
 
 /// OpenMP's thread count for the parallel regions opened in its scope (threads <= 0: the
-/// caller's, unchanged); the caller's count is restored at its end, so code outside the DEM
-/// step (FE bars, I/O) is not affected.
+/// caller's, unchanged); the caller's count is restored at its end, so code outside the
+/// executed step (FE bars, I/O) is not affected.
 class ScopedThreads {
  public:
   explicit ScopedThreads(int threads);
@@ -75,4 +76,4 @@ class ScopedThreads {
   int previous_;
 };
 
-}  // namespace kolsky::dem
+}  // namespace kolsky::time_loop

@@ -1,5 +1,5 @@
 // Grain-pair forces of the Hertz-Mindlin law through the batch kernel (hertz_mindlin_batch.hpp):
-// the same contacts, values and summation order as DemSystem::pair_forces (dem_forces.cpp),
+// the same contacts, values and summation order as pair_forces (contact_forces.cpp),
 // restructured so that the law itself runs branch-free over packed touching contacts.
 // Per block of up to kCapacity listed pairs: (1) test which pairs touch, recording the touching
 // ones without a branch, and clear the histories of the separated ones; (2) copy the inputs of
@@ -12,20 +12,21 @@
 #include <cstdint>
 #include <memory>
 
-#include "dem/dem_system.hpp"
+#include "dem/contact_forces.hpp"
 #include "dem/hertz_mindlin_batch.hpp"
 
 namespace kolsky::dem {
 
-void DemSystem::hertz_mindlin_pair_forces(const HertzMindlinConstants* table, int n_mat,
-                                          double dt) {
-  const PairArrays a = pair_arrays();
+void hertz_mindlin_pair_forces(const PairArrays& arrays, const HertzMindlinConstants* table, int n_mat,
+                               double dt) {
+  // A local copy of the views, as a local: the flag stores (unsigned char) cannot alias it.
+  const PairArrays a = arrays;
   constexpr int kCap = HertzMindlinBatch::kCapacity;
   constexpr int kAhead = 16;  // pairs: about the latency of an L3 hit over a pair's work
 
   const int n_blocks = a.n_blocks;
 
-  // Called by every thread of compute_forces' parallel region (no barrier at the end); the
+  // Called by every thread of evaluate_contacts' parallel region (no barrier at the end); the
   // block below is this thread's share. Each thread takes a contiguous run of whole owner
   // blocks; the results do not depend on the split (each contact is evaluated alone, each
   // grain's sums are formed within its block in pair order, and its cross-block slots are

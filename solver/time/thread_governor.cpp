@@ -1,13 +1,13 @@
-// The thread-count rule of DemSystem's loops (thread_governor.hpp): windows of steps at the
+// The thread-count rule of StepExecutor (thread_governor.hpp): windows of steps at the
 // chosen count, and now and then one at the other count, adjacent in time so that both see
 // the same load on the machine; the faster (by the margin) is kept.
-#include "dem/thread_governor.hpp"
+#include "time/thread_governor.hpp"
 
 #include <algorithm>
 
 #include <omp.h>
 
-namespace kolsky::dem {
+namespace kolsky::time_loop {
 
 ThreadGovernor::ThreadGovernor(int max_threads, ThreadGovernorOptions options)
     : opt_(options), max_threads_(std::max(1, max_threads)), chosen_(max_threads_) {
@@ -66,4 +66,4 @@ ScopedThreads::~ScopedThreads() {
   if (omp_get_max_threads() != previous_) omp_set_num_threads(previous_);
 }
 
-}  // namespace kolsky::dem
+}  // namespace kolsky::time_loop

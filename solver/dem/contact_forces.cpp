@@ -1,6 +1,6 @@
-// Contact kernels of DemSystem: grain-grain pairs and walls (wall.hpp), each a tight loop
-// over a contiguous contact list with the law resolved once outside it (std::visit), writing
-// one slot per contact; then the per-particle gather in a fixed order (dem_system.hpp).
+// Contact kernels (contact_forces.hpp): grain-grain pairs and walls (wall.hpp), each a tight
+// loop over a contiguous contact list with the law resolved once outside it (std::visit),
+// writing one slot per contact; then the per-particle gather in a fixed order.
 // Geometry: n from i to j, overlap delta = r_i + r_j - |x_j - x_i|, contact point at
 // a_i = r_i - delta/2 from i (a_j = r_j - delta/2 from j, so both points coincide); for a wall
 // the contact point lies on the wall surface, a = r - delta.
@@ -8,30 +8,45 @@
 #include <cmath>
 #include <limits>
 
-#include "dem/dem_system.hpp"
+#include "dem/contact_forces.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <limits>
+
+#include "dem/contact_hertz_mindlin.hpp"
 #include "dem/hertz_mindlin_batch.hpp"
 
 namespace kolsky::dem {
 
-DemSystem::PairArrays DemSystem::pair_arrays() {
-  const int n = static_cast<int>(p_.size());
-  return {pairs_.first.data(), pairs_.i.data(), pairs_.j.data(), pair_slot_.data(),
-          p_.material.data(), p_.x.data(), p_.v.data(), p_.omega.data(), p_.radius.data(),
-          p_.mass.data(), pairs_.history.data(), p_.f.data(), p_.torque.data(),
-          dissipated_.data(), pair_out_.elastic.data(), pair_out_.out.data(),
-          pair_out_.active.data(), block_first_.data(), n,
-          static_cast<int>(block_first_.size()) - 1};
-}
+PairArrays::PairArrays(ContactNetwork& c, Particles& p, std::vector<double>& dissipated)
+    : first(c.pairs.first.data()), pi(c.pairs.i.data()), pj(c.pairs.j.data()), slot(c.pair_slot.data()),
+      mat(p.material.data()), x(p.x.data()), v(p.v.data()), w(p.omega.data()), rad(p.radius.data()),
+      mass(p.mass.data()), hist(c.pairs.history.data()), f(p.f.data()), tq(p.torque.data()),
+      diss(dissipated.data()), stored(c.pair_out.elastic.data()), out(c.pair_out.out.data()),
+      active(c.pair_out.active.data()), block_first(c.block_first.data()), n(static_cast<int>(p.size())),
+      n_blocks(static_cast<int>(c.block_first.size()) - 1) {}
+
+namespace {
+
+// Loops shorter than this run on one thread: a parallel region costs microseconds, which
+// would dominate the one- and two-particle verification runs.
+constexpr std::ptrdiff_t kParallelMin = 2048;
+// Wall contacts per chunk handed to a free thread (evaluate_contacts): small enough to even
+// out the threads' sweeps, large enough that taking a chunk (one atomic) costs nothing.
+constexpr int kWallChunk = 256;
 
 template <class Law>
-void DemSystem::pair_forces(const Law& law, double dt) {
-  // One pass per owner particle i over its pairs k (j > i), in fixed blocks of opt_.owner_block
+void pair_forces(const PairArrays& arrays, const Law& law, double dt) {
+  // One pass per owner particle i over its pairs k (j > i), in fixed blocks of owner_block
   // owners: i's side is summed in registers and added once; j's side is added to j at once if
   // j lies in i's block (as the partner's owners all do, in pair order, before j's own sum),
   // else stored in j's slot for gather(). So each grain's sums have one order for any number
-  // of threads, and the batched kernel (dem_forces_batched.cpp) keeps the same order.
-  // Work-shared within compute_forces' region; no barrier at the end (the walls follow).
-  const PairArrays a = pair_arrays();
+  // of threads, and the batched kernel (contact_forces_batched.cpp) keeps the same order.
+  // Work-shared within evaluate_contacts' region; no barrier at the end (the walls follow).
+  // A local copy of the views, as a local: the flag stores (unsigned char) cannot alias it.
+  const PairArrays a = arrays;
   const int n_blocks = a.n_blocks;
 #pragma omp for schedule(static) nowait
   for (int blk = 0; blk < n_blocks; ++blk) {
@@ -82,7 +97,6 @@ void DemSystem::pair_forces(const Law& law, double dt) {
   }
 }
 
-namespace {
 // Grain-wall contact of a grain (radius r, mass m, velocity v, spin w) given the unit normal n
 // toward the wall and the wall's velocity. Returns the result; `torque` gets the moment on the
 // grain about its centre (contact point on the wall surface, lever a = r - delta).
@@ -104,50 +118,49 @@ ContactResult wall_contact(const WallPair& pair, double overlap, const Vec3& n,
   torque = a * cross(n, res.force) + res.rolling_torque;
   return res;
 }
-}  // namespace
 
-// The contacts of one wall with its law and shape resolved (compute_forces visits both once):
+// The contacts of one wall with its law and shape resolved (evaluate_contacts visits both once):
 // the gap, normal, velocity and R* of the wall at each candidate grain (wall.hpp). The
 // overlap -gap is bitwise the one the kernel has always used (wall.hpp says why).
 template <class Law, class Shape>
-void DemSystem::wall_forces(const Law& law, const Shape& shape, int slot, double dt) {
-  const auto c0 = static_cast<std::ptrdiff_t>(wall_first_[slot]);
-  const auto c1 = static_cast<std::ptrdiff_t>(wall_first_[slot + 1]);
-  ContactStore& out = wall_out_;
+void wall_forces(ContactNetwork& net, const Particles& p, const Law& law, const Shape& shape, int slot, double dt) {
+  const auto c0 = static_cast<std::ptrdiff_t>(net.wall_first[slot]);
+  const auto c1 = static_cast<std::ptrdiff_t>(net.wall_first[slot + 1]);
+  ContactStore& out = net.wall_out;
 #pragma omp for schedule(dynamic, kWallChunk) nowait
   for (std::ptrdiff_t c = c0; c < c1; ++c) {
-    const int i = wall_particle_[c];
-    const Vec3& x = p_.x[i];
-    const double r = p_.radius[i];
+    const int i = net.wall_particle[c];
+    const Vec3& x = p.x[i];
+    const double r = p.radius[i];
     const double overlap = -gap_at(shape, x, r);
     if (overlap <= 0) {
       out.active[c] = 0;
-      wall_history_[c] = Vec3{};
+      net.wall_history[c] = Vec3{};
       continue;
     }
     Vec3 torque;
     const ContactResult res =
-        wall_contact(law.pair(p_.material[i]), overlap, normal_at(shape, x), velocity_at(shape, x),
-                     contact_radius_at(shape, x, r), r, p_.mass[i], p_.v[i], p_.omega[i], wall_history_[c], dt, torque);
+        wall_contact(law.pair(p.material[i]), overlap, normal_at(shape, x), velocity_at(shape, x),
+                     contact_radius_at(shape, x, r), r, p.mass[i], p.v[i], p.omega[i], net.wall_history[c], dt, torque);
     out.out[c] = {res.force, torque, res.dissipated, res.elastic_energy};
-    wall_normal_[c] = res.normal_force;
-    wall_elastic_normal_[c] = res.elastic_normal_force;
+    net.wall_normal[c] = res.normal_force;
+    net.wall_elastic_normal[c] = res.elastic_normal_force;
     out.active[c] = 1;
   }
 }
 
-void DemSystem::gather() {
+void gather(const ContactNetwork& net, Particles& p, std::vector<double>& dissipated) {
   // Adds to each particle what pair_forces stored for it as a partner of an owner in another
   // block (contiguous slots, pair order), then its wall contacts, in list order.
-  const auto n = static_cast<std::ptrdiff_t>(p_.size());
-  const int* pfirst = partner_first_.data();
-  const int* wfirst = wall_first_of_.data();
-  const int* wentry = wall_entry_.data();
-  const ContactStore& po = pair_out_;
-  const ContactStore& wo = wall_out_;
-  Vec3* f = p_.f.data();
-  Vec3* tq = p_.torque.data();
-  double* diss = dissipated_.data();
+  const auto n = static_cast<std::ptrdiff_t>(p.size());
+  const int* pfirst = net.partner_first.data();
+  const int* wfirst = net.wall_first_of.data();
+  const int* wentry = net.wall_entry.data();
+  const ContactStore& po = net.pair_out;
+  const ContactStore& wo = net.wall_out;
+  Vec3* f = p.f.data();
+  Vec3* tq = p.torque.data();
+  double* diss = dissipated.data();
 #pragma omp for schedule(static)
   for (std::ptrdiff_t q = 0; q < n; ++q) {
     Vec3 F = f[q], T = tq[q];
@@ -172,11 +185,12 @@ void DemSystem::gather() {
   }
 }
 
-void DemSystem::compute_forces(double dt) {
-  if (particles_changed_) refresh_after_edit();
-  if (needs_rebuild()) rebuild();
-  const auto* hm = std::get_if<HertzMindlin>(&law_);
-  const bool batched = hm && opt_.batched_hertz_mindlin;
+}  // namespace
+
+void evaluate_contacts(ContactNetwork& net, Particles& p, std::vector<double>& dissipated,
+                       const ContactLaw& grain_law, bool batched_hm, std::vector<Wall>& walls, double dt) {
+  const auto* hm = std::get_if<HertzMindlin>(&grain_law);
+  const bool batched = hm && batched_hm;
   const std::vector<HertzMindlinConstants> table =
       batched ? hertz_mindlin_table(*hm) : std::vector<HertzMindlinConstants>{};
   const int n_mat = batched ? hm->n_materials() : 0;
@@ -186,29 +200,29 @@ void DemSystem::compute_forces(double dt) {
   // waiting for it. Wall contacts read only positions, velocities and spins and write their
   // own slots, so they may run beside the sweep, and which thread takes which chunk changes
   // no result. The barrier then separates the slots' writers from gather().
-#pragma omp parallel if (static_cast<std::ptrdiff_t>(p_.size()) >= kParallelMin)
+  const PairArrays arrays(net, p, dissipated);
+#pragma omp parallel if (static_cast<std::ptrdiff_t>(p.size()) >= kParallelMin)
   {
     if (batched)
-      hertz_mindlin_pair_forces(table.data(), n_mat, dt);
+      hertz_mindlin_pair_forces(arrays, table.data(), n_mat, dt);
     else
-      std::visit([&](const auto& law) { pair_forces(law, dt); }, law_);
+      std::visit([&](const auto& law) { pair_forces(arrays, law, dt); }, grain_law);
     // By slot: planes, then cylinders, the order of every wall sum.
-    for (int w = 0; w < static_cast<int>(walls_.size()); ++w)
+    for (int w = 0; w < static_cast<int>(walls.size()); ++w)
       std::visit([&](const auto& shape) {
-        std::visit([&](const auto& law) { wall_forces(law, shape, w, dt); }, shape.wall.law);
-      }, walls_[w].shape);
+        std::visit([&](const auto& law) { wall_forces(net, p, law, shape, w, dt); }, shape.wall.law);
+      }, walls[w].shape);
 #pragma omp barrier
-    gather();
+    gather(net, p, dissipated);
   }
   // Wall resultants in candidate order (deterministic), and the planes' work on the grains
   // by the trapezoid rule over the plane's displacement since the last evaluation.
-  for (int w = 0; w < static_cast<int>(walls_.size()); ++w) {
+  for (int w = 0; w < static_cast<int>(walls.size()); ++w) {
     double sum = 0;
-    for (int c = wall_first_[w]; c < wall_first_[w + 1]; ++c)
-      if (wall_out_.active[c]) sum += wall_normal_[c];
-    record_force(walls_[w], sum);
+    for (int c = net.wall_first[w]; c < net.wall_first[w + 1]; ++c)
+      if (net.wall_out.active[c]) sum += net.wall_normal[c];
+    record_force(walls[w], sum);
   }
-  forces_valid_ = true;
 }
 
 }  // namespace kolsky::dem
