@@ -31,6 +31,11 @@ CaseSpec huang_plan(const Study& s) {
   spec.sigma_lim0 = s.printed("ch5.huang.sigma_lim0") * spec.upscale / s.printed("ch5.huang.upscale");
   spec.end_time = h.at("end_time").get<double>();
   spec.fines_d_min = s.printed("ch5.huang.fines_d_min");
+  // A study's cases file (KOLSKY_CH5_CASES) may stop the loading at a back stress and add scene
+  // changes ("dotted.key=JSON", applied after the set's own): the Huang count study, README.
+  if (h.contains("end_at_back_stress")) spec.end_at_back_stress = h.at("end_at_back_stress").get<double>();
+  if (h.contains("sets"))
+    for (const auto& item : h.at("sets")) spec.sets.push_back(item.get<std::string>());
   return spec;
 }
 
