@@ -1,4 +1,4 @@
-// DemSystem::edit (dem_edit.cpp): removing and adding grains between steps.
+// DemSystem::edit (particle_edit.cpp): removing and adding grains between steps.
 //  - An edit away from every contact (isolated spectator grains, some in the middle of the
 //    index range so that every later grain's index shifts) leaves the busy grains' following
 //    steps bitwise those of a run without the edit, with 1 and 2 threads: the owner blocks and

@@ -1,6 +1,6 @@
 // Spatial orders of the particles: sort_spatially() and sort_morton() order them cell by cell
 // so neighbours sit close in memory (docs/dem.md, "Performance"); morton_order() is the
-// permutation the Morton sort applies (DemSystem's re-sort after an edit, dem_edit.cpp).
+// permutation the Morton sort applies (DemSystem's re-sort after an edit, particle_edit.cpp).
 #pragma once
 #include <vector>
 

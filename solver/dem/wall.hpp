@@ -6,7 +6,7 @@
 // one-DOF elastic ring, walls.hpp); either may carry an FE profile, a deformed shape set from
 // outside each step (the FE-DEM coupling, docs/coupling.md). A new shape is a new alternative
 // and its overloads here and in wall.cpp: the force kernel, the candidate lists, edits and the
-// contact visit (contact_forces.cpp, contact_network.*, dem_edit.cpp) only call the
+// contact visit (contact_forces.cpp, contact_network.*, particle_edit.cpp) only call the
 // free functions. Walls are global: every MPI rank will hold all of them (a few per specimen).
 //
 // Round-off: gap_at is written so that -gap_at is bitwise the overlap the force kernels have
