@@ -4,7 +4,9 @@
 // The DEM twin experiment itself is part of the chapter5 smoke set.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
+#include <vector>
 
 #include "chapter5/backcalc.hpp"
 
@@ -43,6 +45,34 @@ TEST(Ch5BackCalc, RecoversTheStrengthOfASyntheticCurve) {
     EXPECT_GE(r.bracket_hi, truth * (1 - 1e-9)) << start;
     EXPECT_EQ(r.evaluated.size() <= static_cast<std::size_t>(s.max_evaluations), true);
   }
+}
+
+// The set runs a search's first three evaluations ahead, beside the reference (issue 33); the
+// chain finds them by exact sigma_lim0, so first_evaluations must name the search's first three
+// points bit for bit and in order. Then a search handed those runs makes the same evaluations
+// and the same result as one that runs them itself (the twin above).
+TEST(Ch5BackCalc, FirstEvaluationsAreTheSearchsFirstThreePoints) {
+  const CaseResult ref = synthetic(2.37e9);
+  BackCalcSettings s;
+  s.guess = 2.37e9 * 1.3;
+  s.max_evaluations = 20;
+  std::vector<double> asked;
+  const auto own = back_calculate([&](double sigma) { asked.push_back(sigma); return synthetic(sigma); }, ref, s);
+  const std::array<double, 3> first = first_evaluations(s);
+  ASSERT_GE(asked.size(), 3u);
+  for (std::size_t i = 0; i < 3; ++i) EXPECT_EQ(asked[i], first[i]) << i;  // bitwise
+  int reran = 0;
+  const auto handed = back_calculate(
+      [&](double sigma) {
+        for (double f : first)
+          if (f == sigma) return synthetic(f);  // as the chain takes a phase-A run back
+        ++reran;
+        return synthetic(sigma);
+      },
+      ref, s);
+  EXPECT_EQ(reran, static_cast<int>(asked.size()) - 3);
+  EXPECT_EQ(handed.sigma, own.sigma);
+  EXPECT_EQ(handed.evaluated, own.evaluated);
 }
 
 TEST(Ch5BackCalc, StopsAtTheEvaluationCapAndSaysSo) {

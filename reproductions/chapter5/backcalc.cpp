@@ -14,6 +14,24 @@ double curve_score(const CaseResult& c, const CaseResult& reference, double lo, 
   return std::isfinite(d.rms) ? d.rms : std::numeric_limits<double>::infinity();
 }
 
+namespace {
+
+// The first bracket [guess / factor, guess x factor] in ln sigma_lim0, written as this set always
+// computed it (the search's points are exp of these, harness/log_search.cpp).
+struct FirstBracket {
+  double ln_lo, ln_mid, ln_hi;
+};
+FirstBracket first_bracket(const BackCalcSettings& s) {
+  return {std::log(s.guess / s.factor), std::log(s.guess), std::log(s.guess * s.factor)};
+}
+
+}  // namespace
+
+std::array<double, 3> first_evaluations(const BackCalcSettings& s) {
+  const FirstBracket b = first_bracket(s);
+  return {std::exp(b.ln_mid), std::exp(b.ln_lo), std::exp(b.ln_hi)};
+}
+
 BackCalcResult back_calculate(const std::function<CaseResult(double)>& run, const CaseResult& reference,
                               const BackCalcSettings& s) {
   BackCalcResult r;
@@ -27,10 +45,9 @@ BackCalcResult back_calculate(const std::function<CaseResult(double)>& run, cons
     if (!(score >= r.score)) r.score = score, r.sigma = sigma, r.best = std::move(c);
     return score;
   };
-  // The first bracket [guess / factor, guess x factor] written as this set always computed it.
-  const double ln_lo = std::log(s.guess / s.factor), ln_mid = std::log(s.guess), ln_hi = std::log(s.guess * s.factor);
+  const FirstBracket b = first_bracket(s);
   const harness::LogSearchResult q =
-      harness::log_brent_search(objective, {ln_lo, ln_mid, ln_hi, std::log(s.factor), s.rel_tol, s.max_evaluations});
+      harness::log_brent_search(objective, {b.ln_lo, b.ln_mid, b.ln_hi, std::log(s.factor), s.rel_tol, s.max_evaluations});
   r.bracket_lo = q.bracket_lo;
   r.bracket_hi = q.bracket_hi;
   r.converged = q.converged;

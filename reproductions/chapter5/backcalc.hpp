@@ -3,6 +3,7 @@
 // strain, to the reference specimen's: the sets' shared search (harness/log_search.hpp, GSL's
 // Brent minimiser on ln sigma_lim0 after a bracketing walk; runs cached and capped).
 #pragma once
+#include <array>
 #include <functional>
 #include <map>
 #include <string>
@@ -28,6 +29,13 @@ struct BackCalcResult {
   CaseResult best;            ///< the run at sigma
   std::string note;
 };
+
+/// The three sigma_lim0 (Pa) every back-calculation evaluates first, in its order: the first
+/// bracket's middle, lower and upper point, bit for bit the values back_calculate passes to
+/// run(). They do not depend on the reference, so a set may run them beforehand, side by side
+/// with the reference (issue 33: a search that uses more than one rank), and let run() hand
+/// them back.
+std::array<double, 3> first_evaluations(const BackCalcSettings& s);
 
 /// `run(sigma)` runs the candidate specimen; `reference` is the curve to match.
 BackCalcResult back_calculate(const std::function<CaseResult(double)>& run, const CaseResult& reference,

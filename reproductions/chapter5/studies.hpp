@@ -4,6 +4,7 @@
 // results), and measure (its targets.json ids ch5.*, its plots and its part of the report's
 // preamble, from the results alone).
 #pragma once
+#include <array>
 #include <functional>
 #include <nlohmann/json.hpp>
 #include <string>
@@ -76,10 +77,15 @@ struct WangRuns {
   BackCalcResult twin;
   std::vector<BackCalcResult> backcalcs;       ///< per plan.backcalcs; empty when the reference failed
   std::vector<std::vector<CaseResult>> speed;  ///< per plan.speed: its run, then its seeds that ran
+  /// Each back-calculation's first three evaluations (first_evaluations), run in phase A beside
+  /// the reference: per plan.backcalcs, and the twin's.
+  std::vector<std::array<CaseResult, 3>> backcalc_first;
+  std::array<CaseResult, 3> twin_first;
   const CaseResult& base(const WangPlan& p) const;  ///< the variants' c_lim = 8 run
 };
 WangPlan wang_plan(const Study& s);
-/// Phase A: the reference, the pair, the twin's curve, the variants.
+/// Phase A: the reference, the pair, the twin's curve, the variants, and the first three
+/// evaluations of every back-calculation.
 void wang_cases(const WangPlan& p, const CaseRunner& r, SetEnsemble& e, WangRuns& runs);
 /// Phase B, on phase A's results: the twin's and the N's back-calculations (each followed by its
 /// N's speed runs), the other N's speed runs, the companions' runs.

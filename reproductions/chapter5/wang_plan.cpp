@@ -150,6 +150,22 @@ void wang_cases(const WangPlan& p, const CaseRunner& r, SetEnsemble& e, WangRuns
   if (p.until) add_case(e, r, p.base_rerun, &runs.base_rerun);
   add_case(e, r, p.nobreak, &runs.nobreak);
   add_case(e, r, p.clim0, &runs.clim0);
+  // The first three evaluations of each back-calculation do not depend on the curve they are
+  // scored against, so they run here, beside the reference and on other ranks, instead of one
+  // after another at the head of their chain (issue 33); the chain takes them back (add_backcalc).
+  const auto add_first = [&](const BackCalcPlan& b, const std::string& what, std::array<CaseResult, 3>& into) {
+    const std::array<double, 3> sigma = first_evaluations(b.settings);
+    for (std::size_t i = 0; i < sigma.size(); ++i) {
+      CaseSpec c = b.candidate;
+      c.sigma_lim0 = sigma[i];
+      c.label = fmt("%s: sigma_lim0 %.4g GPa (first bracket)", what.c_str(), sigma[i] / 1e9);
+      add_case(e, r, c, &into[i]);
+    }
+  };
+  runs.backcalc_first.resize(p.backcalcs.size());  // before add_case keeps pointers into it
+  if (p.has_twin) add_first(p.twin, fmt("twin experiment at N = %g", p.n_twin), runs.twin_first);
+  for (std::size_t k = 0; k < p.backcalcs.size(); ++k)
+    add_first(p.backcalcs[k], fmt("back-calculation at N = %g", p.backcalcs[k].n), runs.backcalc_first[k]);
 }
 
 namespace {
@@ -192,14 +208,24 @@ std::string context(const BackCalcPlan& b, const std::string& reference_key, con
 }
 
 /// A back-calculation as one chain member: its evaluations in order against `reference`, then
-/// (speed set) that N's speed runs. Its results go to *into and *speed_into.
+/// (speed set) that N's speed runs. Its results go to *into and *speed_into. `first`: its first
+/// three evaluations, run in phase A (wang_cases); the chain takes each back as the search asks
+/// for it (the same sigma_lim0 bit for bit, so the search and its result are those of a chain
+/// that runs them itself).
 void add_backcalc(SetEnsemble& e, const CaseRunner& r, const std::string& label, const BackCalcPlan& b,
-                  const CaseResult& reference, const std::string& reference_key, const SpeedPlan* speed,
-                  BackCalcResult* into, std::vector<CaseResult>* speed_into) {
+                  const std::array<CaseResult, 3>& first, const CaseResult& reference,
+                  const std::string& reference_key, const SpeedPlan* speed, BackCalcResult* into,
+                  std::vector<CaseResult>* speed_into) {
   std::optional<SpeedPlan> sp;
   if (speed != nullptr) sp = *speed;
-  auto run = [r, b, reference, sp] {
+  auto run = [r, b, first, reference, sp] {
     auto evaluate = [&](double sigma) {
+      for (const CaseResult& f : first)
+        if (f.spec.sigma_lim0 == sigma) {
+          CaseResult c = f;
+          c.spec.label = b.candidate.label;  // the record the chain's own run would have made
+          return c;
+        }
       CaseSpec c = b.candidate;
       c.sigma_lim0 = sigma;
       return r.run(c);
@@ -223,7 +249,7 @@ void wang_chains(const WangPlan& p, const CaseRunner& r, SetEnsemble& e, WangRun
   const CaseResult& truth = p.twin_is_pair ? runs.pair : runs.twin_ref;
   if (truth.ok && p.has_twin) {
     runs.twin_ran = true;
-    add_backcalc(e, r, fmt("twin experiment at N = %g", p.n_twin), p.twin, truth,
+    add_backcalc(e, r, fmt("twin experiment at N = %g", p.n_twin), p.twin, runs.twin_first, truth,
                  case_key(r, p.twin_is_pair ? p.pair : p.twin_ref), nullptr, &runs.twin, nullptr);
   }
   if (runs.ref.ok) {  // the back-calculations and speed against error need the reference
@@ -235,7 +261,7 @@ void wang_chains(const WangPlan& p, const CaseRunner& r, SetEnsemble& e, WangRun
       for (std::size_t i = 0; i < p.speed.size() && speed < 0; ++i)
         if (!p.speed[i].is_ref && p.speed[i].backcalc == static_cast<long>(k)) speed = static_cast<long>(i);
       add_backcalc(e, r, fmt("back-calculation at N = %g%s", p.backcalcs[k].n, speed >= 0 ? ", then its speed runs" : ""),
-                   p.backcalcs[k], runs.ref, ref_key, speed >= 0 ? &p.speed[speed] : nullptr, &runs.backcalcs[k],
+                   p.backcalcs[k], runs.backcalc_first[k], runs.ref, ref_key, speed >= 0 ? &p.speed[speed] : nullptr, &runs.backcalcs[k],
                    speed >= 0 ? &runs.speed[speed] : nullptr);
     }
     for (std::size_t i = 0; i < p.speed.size(); ++i) {
