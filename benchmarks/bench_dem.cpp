@@ -14,6 +14,9 @@
 //     packs them once: the packing's step count does not depend on N, so its cost scales with
 //     the grain count (measured on one core of the development machine: 6 min for N = 1.5,
 //     21 min for N = 1, with the other core busy; OpenMP threads shorten it).
+//   BM_DemKernelVariant/variant: BM_DemCompaction on one thread with the Hertz-Mindlin batch
+//     law's instruction-set variant forced (0 portable, 1 AVX2, 2 AVX-512; skipped where the
+//     CPU lacks it): the speed of each dispatch target (issue 34).
 //   BM_DemBreakageIdle/threads: BM_DemCompaction's scene and steps with particle breakage on
 //     (breakage_engine.hpp) checked every 1, 10 or 50 steps (/threads/interval; 50 is the
 //     default check_interval) but strong grains (sigma_lim0 = 1e15 Pa: no break can
@@ -58,6 +61,7 @@
 #include "dem/breakage_engine.hpp"
 #include "dem/contact_hertz_mindlin.hpp"
 #include "dem/dem_system.hpp"
+#include "dem/hertz_mindlin_batch.hpp"
 #include "dem/packing.hpp"
 #include "io/csv.hpp"
 #include "psd/grain_size_curve.hpp"
@@ -258,6 +262,22 @@ void BM_DemCompaction(benchmark::State& st) {
   st.SetLabel(benchmark_specimen().label);
 }
 
+// BM_DemCompaction on one thread with the batch law's instruction-set variant forced
+// (/variant: 0 portable, 1 AVX2, 2 AVX-512; hertz_mindlin_batch.hpp). A variant the CPU lacks
+// is skipped with a message. Same bits in every variant (test_dem_batch.cpp), so only the
+// speed differs.
+void BM_DemKernelVariant(benchmark::State& st) {
+  const auto k = static_cast<dem::BatchKernel>(st.range(0));
+  if (!dem::batch_kernel_available(k)) {
+    st.SkipWithError((std::string(dem::batch_kernel_name(k)) + ": not on this CPU or build").c_str());
+    return;
+  }
+  dem::use_batch_kernel(k);
+  run(st, benchmark_specimen(), 1, 200);
+  dem::use_batch_kernel(dem::best_batch_kernel());
+  st.SetLabel(benchmark_specimen().label + ", " + dem::batch_kernel_name(k));
+}
+
 // A process that keeps one core busy while it lives (killed at the end of the case, or with
 // bench_dem itself through PR_SET_PDEATHSIG).
 class BusyCore {
@@ -303,6 +323,7 @@ void BM_DemUpscale(benchmark::State& st) {
 }  // namespace
 
 BENCHMARK(BM_DemCompaction)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_DemKernelVariant)->Arg(0)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_DemBreakageIdle)->Args({1, 1})->Args({1, 10})->Args({1, 50})->Args({2, 50})->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_DemBreakageGrowing)->Arg(1)->Arg(2)->Iterations(1)->Unit(benchmark::kMillisecond)->UseRealTime();
 // Five iterations (1,000 timed steps) after the governor's decision (BM_DemBusyCore).

@@ -11,8 +11,10 @@
 #include <algorithm>
 #include <cstdio>
 #include <cstring>
+#include <stdexcept>
 
 #include "dem/dem_system.hpp"
+#include "dem/hertz_mindlin_batch.hpp"
 #include "dem_busy_scene.hpp"
 
 namespace kolsky::dem {
@@ -90,6 +92,37 @@ TEST(DemBatchKernel, MatchesWithTwoMaterials) {
   // Alternating materials: the constants come from the material-pair table per contact.
   const std::vector<Material> two{{78e9, 0.3, 2650}, {20e9, 0.2, 2650}};
   expect_kernels_agree({0.5, 0.3}, two);
+}
+
+// Every instruction-set variant of the batch law (issue 34; hertz_mindlin_batch.hpp) against the
+// per-contact kernel on the same busy scene. One source compiled without contraction, so the
+// tolerance is again bitwise, in every variant. A variant this CPU or build lacks is skipped
+// (the output says which ran: on the 2-core CI machine, portable and AVX2).
+TEST(DemBatchKernel, EveryInstructionSetVariantMatchesBitwise) {
+  int ran = 0;
+  for (BatchKernel k : {BatchKernel::portable, BatchKernel::avx2, BatchKernel::avx512}) {
+    if (!batch_kernel_available(k)) {
+      std::printf("  %s: not on this CPU or build, skipped\n", batch_kernel_name(k));
+      continue;
+    }
+    std::printf("  %s\n", batch_kernel_name(k));
+    use_batch_kernel(k);
+    expect_kernels_agree({0.5, 0.5}, test::kBusySand);
+    ++ran;
+  }
+  use_batch_kernel(best_batch_kernel());
+  EXPECT_GE(ran, 1);
+}
+
+TEST(DemBatchKernel, AVariantTheCpuLacksIsRefused) {
+  for (BatchKernel k : {BatchKernel::avx2, BatchKernel::avx512})
+    if (!batch_kernel_available(k)) {
+      EXPECT_THROW(use_batch_kernel(k), std::invalid_argument);
+      HertzMindlinBatch b;
+      EXPECT_THROW(evaluate_with(k, b, 0, 1e-9), std::invalid_argument);
+    }
+  EXPECT_TRUE(batch_kernel_available(BatchKernel::portable));
+  EXPECT_TRUE(batch_kernel_available(best_batch_kernel()));
 }
 
 }  // namespace

@@ -6,6 +6,8 @@
 #include "dem/hertz_mindlin_batch.hpp"
 
 #include <cmath>
+#include <stdexcept>
+#include <string>
 
 namespace kolsky::dem {
 
@@ -24,18 +26,11 @@ std::vector<HertzMindlinConstants> hertz_mindlin_table(const HertzMindlin& law) 
   return constants;
 }
 
-// One clone per instruction set, chosen once at load time by the CPU (GCC function
-// multiversioning), so every thread and every run on a machine takes the same one; without
-// contraction all clones give the same bits. The build itself stays portable (no -march).
-// clang 14 (the sanitized build, fuzz/CMakeLists.txt) does not clone a function declared
-// before without the attribute: it compiled this one for AVX-512 alone, with no dispatch, and
-// it died with SIGILL on a CPU without AVX-512 (2026-12-04). It gets the portable kernel.
-#if defined(__clang__)
-void evaluate(HertzMindlinBatch& b, int count, double dt) {
-#else
-[[gnu::target_clones("avx512f", "avx2", "default")]]
-void evaluate(HertzMindlinBatch& b, int count, double dt) {
-#endif
+namespace {
+
+// The law over the batch, written once; each instruction-set variant below inlines it and the
+// compiler vectorises it for that variant's registers.
+[[gnu::always_inline]] inline void evaluate_batch(HertzMindlinBatch& b, int count, double dt) {
   for (int t = 0; t < count; ++t) {
     // Geometry (contact_forces.cpp): n = d/|d|, delta = r_i + r_j - |d|, levers a = r - delta/2.
     const double dx = b.dx[t], dy = b.dy[t], dz = b.dz[t];
@@ -128,5 +123,82 @@ void evaluate(HertzMindlinBatch& b, int count, double dt) {
     b.tjz[t] = aj * cz - 0.0;
   }
 }
+
+// One variant per instruction set, each an explicit function (issue 34: each can be tested and
+// benchmarked on its own; GCC's target_clones hid them behind one load-time choice). The build
+// stays portable (no -march): a variant is called only where the CPU has its instructions.
+// clang 14 (the sanitized build, fuzz/CMakeLists.txt) compiled an earlier target_clones
+// version for AVX-512 alone and died with SIGILL on a CPU without it (2026-12-04), so under
+// clang only the portable variant exists.
+void evaluate_portable(HertzMindlinBatch& b, int count, double dt) { evaluate_batch(b, count, dt); }
+#if !defined(__clang__)
+[[gnu::target("avx2")]] void evaluate_avx2(HertzMindlinBatch& b, int count, double dt) {
+  evaluate_batch(b, count, dt);
+}
+[[gnu::target("avx512f")]] void evaluate_avx512(HertzMindlinBatch& b, int count, double dt) {
+  evaluate_batch(b, count, dt);
+}
+#endif
+
+using Variant = void (*)(HertzMindlinBatch&, int, double);
+
+Variant variant(BatchKernel k) {
+  switch (k) {
+#if !defined(__clang__)
+    case BatchKernel::avx512: return evaluate_avx512;
+    case BatchKernel::avx2: return evaluate_avx2;
+#endif
+    default: return evaluate_portable;
+  }
+}
+
+// The variant evaluate() calls: the best the CPU has, chosen once, the same for every thread.
+Variant& chosen() {
+  static Variant v = variant(best_batch_kernel());
+  return v;
+}
+
+}  // namespace
+
+bool batch_kernel_available(BatchKernel k) {
+  switch (k) {
+    case BatchKernel::portable: return true;
+#if !defined(__clang__)
+    case BatchKernel::avx2: return __builtin_cpu_supports("avx2");
+    case BatchKernel::avx512: return __builtin_cpu_supports("avx512f");
+#endif
+    default: return false;
+  }
+}
+
+BatchKernel best_batch_kernel() {
+  for (BatchKernel k : {BatchKernel::avx512, BatchKernel::avx2})
+    if (batch_kernel_available(k)) return k;
+  return BatchKernel::portable;
+}
+
+const char* batch_kernel_name(BatchKernel k) {
+  switch (k) {
+    case BatchKernel::avx512: return "avx512";
+    case BatchKernel::avx2: return "avx2";
+    default: return "portable";
+  }
+}
+
+void use_batch_kernel(BatchKernel k) {
+  if (!batch_kernel_available(k))
+    throw std::invalid_argument(std::string("use_batch_kernel: this CPU (or build) has no ") + batch_kernel_name(k) +
+                                " variant");
+  chosen() = variant(k);
+}
+
+void evaluate_with(BatchKernel k, HertzMindlinBatch& b, int count, double dt) {
+  if (!batch_kernel_available(k))
+    throw std::invalid_argument(std::string("evaluate_with: this CPU (or build) has no ") + batch_kernel_name(k) +
+                                " variant");
+  variant(k)(b, count, dt);
+}
+
+void evaluate(HertzMindlinBatch& b, int count, double dt) { chosen()(b, count, dt); }
 
 }  // namespace kolsky::dem

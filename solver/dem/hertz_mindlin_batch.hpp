@@ -44,7 +44,23 @@ struct HertzMindlinBatch {
   alignas(64) Lane<double> fx, fy, fz, tix, tiy, tiz, tjx, tjy, tjz, dissipated, elastic;
 };
 
-/// Evaluates contacts [0, count) of b (count <= kCapacity) over the step dt (s).
+/// Evaluates contacts [0, count) of b (count <= kCapacity) over the step dt (s), with the
+/// instruction-set variant in use (best_batch_kernel() unless use_batch_kernel chose another).
 void evaluate(HertzMindlinBatch& b, int count, double dt);
+
+/// The instruction-set variants of evaluate(): one source, compiled three times (without FMA
+/// contraction, so every variant gives the same bits; test_dem_batch.cpp checks it).
+enum class BatchKernel { portable, avx2, avx512 };
+/// Whether this CPU and build have the variant (portable always; none but portable in a clang
+/// build).
+bool batch_kernel_available(BatchKernel k);
+/// The widest available variant: what evaluate() uses unless told otherwise.
+BatchKernel best_batch_kernel();
+const char* batch_kernel_name(BatchKernel k);  ///< "portable", "avx2", "avx512"
+/// Makes evaluate() use variant k from now on, process-wide (benchmarks that measure each one).
+/// Throws std::invalid_argument where k is not available. Not while a force evaluation runs.
+void use_batch_kernel(BatchKernel k);
+/// Evaluates with variant k (std::invalid_argument where it is not available).
+void evaluate_with(BatchKernel k, HertzMindlinBatch& b, int count, double dt);
 
 }  // namespace kolsky::dem
