@@ -29,7 +29,7 @@ help:
 	@echo "  make study-at-rest  issue 31 item 0: the Chapter 4 specimen held at rest, as packed and relaxed (N = 4, 3, 2; ~15 min) -> $(BUILD)/study-at-rest/"
 	@echo "  make study-wang-loading  issue 31 H2/H3: Wang loaded to 72 MPa, reconstructed and L/10 top size (N = 1, 1.5, 2 x 3 seeds; ~2 h on two cores) -> $(BUILD)/study-wang/"
 	@echo "  make study-backcalc-seeds  issue 31: sigma_lim0 back-calculated at N = 2.5 and 2 over packing seeds 1-3 (needs study-wang-loading's N = 1 case) -> $(BUILD)/study-backcalc-seeds/"
-	@echo "  make study-huang-count  issue 31: three full-scale Huang variants for the count at 42.5 MPa (strength, c_lim = 0, porosity 0.44; ~45 min on one core) -> $(BUILD)/study-huang-count/"
+	@echo "  make study-huang-count  issue 31: five full-scale Huang variants for the count at 42.5 MPa (strength, c_lim = 0, porosity 0.44, seed 2 with and without c_lim; ~75 min on one core) -> $(BUILD)/study-huang-count/"
 	@echo "  make study-ringing  issue 31: Chapter 3's early face-stress gap against the specimen's inertia (3 runs, ~4 min) -> $(BUILD)/study-ringing/"
 	@echo "  make study-preparation  issue 31 H1: each packing procedure, relaxed, loaded (Chapter 4, N = 4, 3) and at rest (Chapter 3, N = 3; Chapter 5 Wang, N = 2); ~25 min -> $(BUILD)/study-preparation/"
 	@echo "  make rebaseline SET=<set> REASON=\"...\" [SCALE=smoke|full] [RUNS=n]"

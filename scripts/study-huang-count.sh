@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # Issue 31, Chapter 5's red Huang count at 42.5 MPa (reproductions/chapter5/README.md, "Huang at
-# 42.5 MPa: three causes tested"). Three full-scale Huang variants of the set's case (N = 2.5),
+# 42.5 MPa: three causes tested"). Five full-scale Huang variants of the set's case (N = 2.5),
 # each stopped when the back stress passes 44 MPa (loading.end_at_back_stress), ~10 min each
-# on a free core plus one packing (~12 min) for the porosity variant:
+# on a free core plus one packing (~12 min) for the porosity variant and one for seed 2:
 #   s26: sigma_lim0 2.6 GPa (H4: the count self-similar in sigma / sigma_lim0)
 #   c0:  coordination_limit 0 (H6: the c_lim = 8 protection against the force network)
 #   n44: porosity 0.44 and the 700/s held past 280 us (H7: a looser specimen than the assumed 0.40)
