@@ -28,9 +28,10 @@ variant() {  # label end_time changes...
   for s in "$@"; do sets="$sets${sets:+, }\"${s//\"/\\\"}\""; done
   echo "{\"huang\": {\"n\": 2.5, \"end_time\": $end, \"end_at_back_stress\": 44e6, \"sets\": [$sets]}}" > "$out/cases_$label.json"
   # Packings are looked up by content (harness::packing_key): one made for an earlier variant
-  # is reused by a later one with the same packing inputs.
+  # is reused by a later one with the same packing inputs. Hard links, not copies (~50 MB each
+  # time): cache files are written once, by rename, and never changed in place.
   mkdir -p "$out/$label/packing_cache"
-  cp -n "$out"/*/packing_cache/*.bin "$out/$label/packing_cache/" 2>/dev/null || true
+  cp -nl "$out"/*/packing_cache/*.bin "$out/$label/packing_cache/" 2>/dev/null || true
   echo "$label: running (log $out/$label.log)"
   KOLSKY_CH5_STUDIES=huang KOLSKY_CH5_CASES="$out/cases_$label.json" KOLSKY_CH5_THREADS=1 OMP_NUM_THREADS=1 \
     "$build/reproductions/reproduce_chapter5" --scale full --out "$out/$label" > "$out/$label.log" 2>&1 || true

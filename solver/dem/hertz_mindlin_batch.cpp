@@ -185,18 +185,21 @@ const char* batch_kernel_name(BatchKernel k) {
   }
 }
 
-void use_batch_kernel(BatchKernel k) {
+namespace {
+
+Variant available_variant(BatchKernel k, const char* caller) {
   if (!batch_kernel_available(k))
-    throw std::invalid_argument(std::string("use_batch_kernel: this CPU (or build) has no ") + batch_kernel_name(k) +
+    throw std::invalid_argument(std::string(caller) + ": this CPU (or build) has no " + batch_kernel_name(k) +
                                 " variant");
-  chosen() = variant(k);
+  return variant(k);
 }
 
+}  // namespace
+
+void use_batch_kernel(BatchKernel k) { chosen() = available_variant(k, "use_batch_kernel"); }
+
 void evaluate_with(BatchKernel k, HertzMindlinBatch& b, int count, double dt) {
-  if (!batch_kernel_available(k))
-    throw std::invalid_argument(std::string("evaluate_with: this CPU (or build) has no ") + batch_kernel_name(k) +
-                                " variant");
-  variant(k)(b, count, dt);
+  available_variant(k, "evaluate_with")(b, count, dt);
 }
 
 void evaluate(HertzMindlinBatch& b, int count, double dt) { chosen()(b, count, dt); }
