@@ -18,12 +18,12 @@
 #include <nlohmann/json.hpp>
 
 #include "harness/case_pipeline.hpp"
-#include "common/study_args.hpp"
 #include "core/atomic_file.hpp"
 #include "core/errors.hpp"
 #include "dem/dem_specimen_params.hpp"
 #include "dem/packing.hpp"
 #include "scene/scene.hpp"
+#include "studies/study_cli.hpp"
 
 namespace {
 
@@ -37,23 +37,19 @@ struct Options {
 };
 
 [[noreturn]] void usage(int code) {
-  std::fprintf(code ? stderr : stdout,
-               "usage: study_at_rest SCENE.json [--relax on|off|scene] [--hold S] [--every S]\n"
-               "                     [--cache DIR] [--upscale N] [--csv OUT.csv] [--relax-steps K]\n"
-               "                     [--rolling K] [--diameter M] [--length M]\n"
-               "                     [--set dotted.key=JSON ...]  (e.g. specimen.packing='\"servo_walls\"')\n"
-               "Steps the scene's DEM specimen with fixed walls and no load; prints Z, wall\n"
-               "stresses and kinetic energy every --every seconds up to --hold (default 200 us).\n");
-  std::exit(code);
+  repro::exit_with_usage(code,
+                         "usage: study_at_rest SCENE.json [--relax on|off|scene] [--hold S] [--every S]\n"
+                         "                     [--cache DIR] [--upscale N] [--csv OUT.csv] [--relax-steps K]\n"
+                         "                     [--rolling K] [--diameter M] [--length M]\n"
+                         "                     [--set dotted.key=JSON ...]  (e.g. specimen.packing='\"servo_walls\"')\n"
+                         "Steps the scene's DEM specimen with fixed walls and no load; prints Z, wall\n"
+                         "stresses and kinetic energy every --every seconds up to --hold (default 200 us).\n");
 }
 
 Options parse(int argc, char** argv) {
   Options o;
-  repro::FlagReader r(argc, argv, usage);
-  while (r.next()) {
-    const std::string& a = r.arg();
-    if (a == "--help" || a == "-h") usage(0);
-    else if (a == "--relax") o.relax = r.value();
+  repro::read_flags(argc, argv, usage, [&](const std::string& a, repro::FlagReader& r) {
+    if (a == "--relax") o.relax = r.value();
     else if (a == "--hold") o.hold = r.number();
     else if (a == "--every") o.every = r.number();
     else if (a == "--cache") o.cache = r.value();
@@ -65,8 +61,9 @@ Options parse(int argc, char** argv) {
     else if (a == "--diameter") o.diameter = r.number();
     else if (a == "--length") o.length = r.number();
     else if (o.scene.empty() && a[0] != '-') o.scene = a;
-    else usage(1);
-  }
+    else return false;
+    return true;
+  });
   if (o.scene.empty() || !(o.relax == "on" || o.relax == "off" || o.relax == "scene")) usage(1);
   return o;
 }

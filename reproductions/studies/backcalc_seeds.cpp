@@ -22,10 +22,9 @@
 
 #include "chapter5/backcalc.hpp"
 #include "common/stats.hpp"
-#include "common/study_args.hpp"
-#include "core/atomic_file.hpp"
 #include "io/csv.hpp"
 #include "scene/json_reader.hpp"
+#include "studies/study_cli.hpp"
 
 namespace {
 
@@ -44,14 +43,13 @@ struct Options {
 };
 
 [[noreturn]] void usage(int code) {
-  std::fprintf(code ? stderr : stdout,
-               "usage: study_backcalc_seeds --reference HISTORY.csv --upscale N --seeds 1,2,3 --out DIR\n"
-               "         [--until PA] [--cache DIR] [--max-evaluations K]\n"
-               "Back-calculates sigma_lim0 of the Chapter 5 Wang specimen at N against the reference\n"
-               "curve (t_s, strain, stress_back_pa; cut at the first sample reaching --until, default\n"
-               "72e6 Pa) once per packing seed, as the set does for seed 1. Resumable: a seed whose\n"
-               "DIR/N<N>_seed<K>.json exists is not rerun.\n");
-  std::exit(code);
+  repro::exit_with_usage(code,
+                         "usage: study_backcalc_seeds --reference HISTORY.csv --upscale N --seeds 1,2,3 --out DIR\n"
+                         "         [--until PA] [--cache DIR] [--max-evaluations K]\n"
+                         "Back-calculates sigma_lim0 of the Chapter 5 Wang specimen at N against the reference\n"
+                         "curve (t_s, strain, stress_back_pa; cut at the first sample reaching --until, default\n"
+                         "72e6 Pa) once per packing seed, as the set does for seed 1. Resumable: a seed whose\n"
+                         "DIR/N<N>_seed<K>.json exists is not rerun.\n");
 }
 
 std::vector<long> parse_seeds(const std::string& text) {
@@ -71,22 +69,19 @@ std::vector<long> parse_seeds(const std::string& text) {
 
 Options parse(int argc, char** argv) {
   Options o;
-  repro::FlagReader r(argc, argv, usage);
-  while (r.next()) {
-    const std::string& a = r.arg();
-    if (a == "--help" || a == "-h") usage(0);
-    else if (a == "--reference") o.reference = r.value();
+  repro::read_flags(argc, argv, usage, [&](const std::string& a, repro::FlagReader& r) {
+    if (a == "--reference") o.reference = r.value();
     else if (a == "--upscale") o.upscale = r.number();
     else if (a == "--seeds") o.seeds = parse_seeds(r.value());
     else if (a == "--out") o.out = r.value();
     else if (a == "--until") o.until = r.number();
     else if (a == "--cache") o.cache = r.value();
     else if (a == "--max-evaluations") o.max_evaluations = static_cast<int>(r.integer());
-    else usage(1);
-  }
+    else return false;
+    return true;
+  });
   if (o.reference.empty() || o.out.empty() || o.seeds.empty() || !(o.upscale > 1) || o.max_evaluations < 3) usage(1);
-  if (o.cache.empty()) o.cache = o.out + "/packing_cache";
-  o.cache = std::filesystem::absolute(o.cache).string();  // the scene resolves paths elsewhere
+  o.cache = repro::packing_cache_dir(o.cache, o.out);
   return o;
 }
 
@@ -106,7 +101,7 @@ ch5::CaseResult read_reference(const std::string& path, double until) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  std::setvbuf(stdout, nullptr, _IOLBF, 0);
+  repro::line_buffered_stdout();
   const Options o = parse(argc, argv);
   const std::string dir = std::string(KOLSKY_SOURCE_DIR) + "/reproductions/chapter5";
   std::filesystem::create_directories(o.out);
@@ -161,7 +156,7 @@ int main(int argc, char** argv) {
     j["runs"] = r.evaluated.size();
     for (const auto& [s, score] : r.evaluated) j["evaluated"].push_back({s, score});
     j["note"] = r.note;
-    write_file_atomic(file, j.dump(1) + "\n");
+    repro::write_json_atomic(file, j);
     sigmas.push_back(r.sigma);
     std::printf("N = %g, seed %ld: %.4g GPa (/ Eq. 5.17 %.3f), RMS %.2f MPa, %zu runs%s\n", o.upscale, seed,
                 r.sigma / 1e9, r.sigma / eq517, r.score / 1e6, r.evaluated.size(), r.converged ? "" : ", not converged");

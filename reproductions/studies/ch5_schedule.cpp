@@ -14,14 +14,13 @@
 #include <vector>
 
 #include "chapter5/set.hpp"
+#include "studies/study_cli.hpp"
 
 using namespace kolsky;
 
 int main(int argc, char** argv) {
-  if (argc < 2 || std::string(argv[1]) == "--help") {
-    std::fprintf(argc < 2 ? stderr : stdout, "usage: study_ch5_schedule MEMBERS.json [RANKS ...]\n");
-    return argc < 2 ? 1 : 0;
-  }
+  if (argc < 2 || std::string(argv[1]) == "--help")
+    repro::exit_with_usage(argc < 2 ? 1 : 0, "usage: study_ch5_schedule MEMBERS.json [RANKS ...]\n");
   std::vector<ch5::MemberRecord> log;
   try {
     std::ifstream f(argv[1]);

@@ -10,14 +10,14 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <optional>
 #include <string>
 
 #include <nlohmann/json.hpp>
 
 #include "chapter3/studies.hpp"
-#include "common/study_args.hpp"
-#include "core/atomic_file.hpp"
 #include "io/csv.hpp"
+#include "studies/study_cli.hpp"
 
 namespace {
 
@@ -30,29 +30,26 @@ struct Options {
 };
 
 [[noreturn]] void usage(int code) {
-  std::fprintf(code ? stderr : stdout,
-               "usage: study_ringing --out DIR --label NAME [--seed K] [--pulse FILE] [--rise-end S]\n"
-               "Runs the Chapter 3 full-scale 1.5 x specimen (scene_full.json + the studies' 'shifted'\n"
-               "patch) with packing seed K (default 1) and the incident pulse FILE (default the set's;\n"
-               "an absolute path or one relative to reproductions/chapter3/), and reads the face stresses:\n"
-               "the measured gap against the specimen's momentum rate before --rise-end (default\n"
-               "125e-6 s), alpha from there to 13 MPa, alpha from the back face's 2 MPa.\n");
-  std::exit(code);
+  repro::exit_with_usage(code,
+                         "usage: study_ringing --out DIR --label NAME [--seed K] [--pulse FILE] [--rise-end S]\n"
+                         "Runs the Chapter 3 full-scale 1.5 x specimen (scene_full.json + the studies' 'shifted'\n"
+                         "patch) with packing seed K (default 1) and the incident pulse FILE (default the set's;\n"
+                         "an absolute path or one relative to reproductions/chapter3/), and reads the face stresses:\n"
+                         "the measured gap against the specimen's momentum rate before --rise-end (default\n"
+                         "125e-6 s), alpha from there to 13 MPa, alpha from the back face's 2 MPa.\n");
 }
 
 Options parse(int argc, char** argv) {
   Options o;
-  repro::FlagReader r(argc, argv, usage);
-  while (r.next()) {
-    const std::string& a = r.arg();
-    if (a == "--help" || a == "-h") usage(0);
-    else if (a == "--out") o.out = r.value();
+  repro::read_flags(argc, argv, usage, [&](const std::string& a, repro::FlagReader& r) {
+    if (a == "--out") o.out = r.value();
     else if (a == "--label") o.label = r.value();
     else if (a == "--seed") o.seed = r.integer();
     else if (a == "--pulse") o.pulse = r.value();
     else if (a == "--rise-end") o.rise_end = r.number();
-    else usage(1);
-  }
+    else return false;
+    return true;
+  });
   if (o.out.empty() || o.label.empty() || !(o.rise_end > 0)) usage(1);
   if (!o.pulse.empty()) o.pulse = std::filesystem::absolute(o.pulse).string();
   return o;
@@ -71,20 +68,17 @@ double alpha_from(const ch3::CaseResult& c, long a, long end) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  std::setvbuf(stdout, nullptr, _IOLBF, 0);
+  repro::line_buffered_stdout();
   const Options o = parse(argc, argv);
   const std::string dir = std::string(KOLSKY_SOURCE_DIR) + "/reproductions/chapter3";
-  const std::string stem = o.out + "/" + o.label;
-  std::filesystem::create_directories(o.out);
-  if (std::filesystem::exists(stem + ".json")) {
-    std::printf("%s: done before (%s.json); not rerun\n", o.label.c_str(), stem.c_str());
-    return 0;
-  }
+  const std::optional<std::string> case_stem = repro::start_case(o.out, o.label);
+  if (!case_stem) return 0;
+  const std::string& stem = *case_stem;
   ch3::Context x;
   x.scene_path = dir + "/scene_full.json";
   x.scene = ch3::read_json(x.scene_path);
   x.studies = ch3::read_json(dir + "/studies_full.json");
-  x.packing_cache = std::filesystem::absolute(o.out + "/packing_cache").string();
+  x.packing_cache = repro::packing_cache_dir("", o.out);  // no --cache here: OUT/packing_cache
   x.ringing_time = o.rise_end;
   nlohmann::json patch;
   for (const auto& c : x.studies.at("cases"))
@@ -94,10 +88,7 @@ int main(int argc, char** argv) {
   std::printf("%s: the 1.5 x specimen, seed %ld, pulse %s, rise end %.1f us\n", o.label.c_str(), o.seed,
               o.pulse.empty() ? "(the set's)" : o.pulse.c_str(), o.rise_end * 1e6);
   const ch3::CaseResult c = ch3::run_case(ch3::make_case(x, o.label, patch));
-  if (!c.ok) {
-    std::fprintf(stderr, "%s: failed: %s\n", o.label.c_str(), c.failure.c_str());
-    return 3;
-  }
+  if (!c.ok) return repro::case_failed(o.label, c.failure);
   const ch3::Measures m = ch3::measure(x, c);
   long k2 = 0;
   while (k2 < m.i_end && c.faces.back[k2] < 2e6) ++k2;
@@ -125,6 +116,6 @@ int main(int argc, char** argv) {
               m.stress_at_ringing_end / 1e6, m.face_gap_max / 1e6, alpha_2mpa, m.time_at_cutoff * 1e6, c.wall_s);
   io::write_csv(stem + "_faces.csv",
                 {{"t_after_arrival_s", "stress_front_pa", "stress_back_pa", "inertia_gap_pa"}, {c.faces.t, c.faces.front, c.faces.back, need}, {}, {}});
-  write_file_atomic(stem + ".json", j.dump(1) + "\n");  // last: marks the case done
+  repro::finish_case(stem, j);
   return 0;
 }

@@ -13,16 +13,15 @@
 // parents, B_r) and DIR/NAME_psd<S>.csv (downscaled curve at S MPa).
 #include <cmath>
 #include <cstdio>
-#include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include <nlohmann/json.hpp>
 
 #include "chapter5/ch5.hpp"
-#include "common/study_args.hpp"
-#include "core/atomic_file.hpp"
 #include "io/csv.hpp"
+#include "studies/study_cli.hpp"
 
 namespace {
 
@@ -41,25 +40,21 @@ constexpr double kSigmaN1 = 1.53e9, kSigmaN15 = 2.37e9, kFinesDMin = 7.5e-6;
 constexpr double kStresses[] = {20e6, 43e6, 60e6, 72e6};
 
 [[noreturn]] void usage(int code) {
-  std::fprintf(code ? stderr : stdout,
-               "usage: study_wang_loading --out DIR --label NAME [--upscale N] [--sigma PA]\n"
-               "         [--loading FILE] [--end-at PA] [--end-time S] [--psd FILE] [--seed K]\n"
-               "         [--cache DIR] [--reference DIR/NAME] [--set dotted.key=JSON ...]\n"
-               "Runs the Chapter 5 Wang scene with the loading file (default: the peak rate held,\n"
-               "wang2018_strain_rate_held.csv) until the back stress reaches --end-at (default\n"
-               "72e6 Pa; 0: --end-time only) and reads counts, B_r and the downscaled grain-size\n"
-               "curve at 20 / 43 / 60 / 72 MPa. Files relative to reproductions/chapter5/.\n"
-               "--reference: RMS of the curves at 43 and 72 MPa against that case's (points).\n");
-  std::exit(code);
+  repro::exit_with_usage(code,
+                         "usage: study_wang_loading --out DIR --label NAME [--upscale N] [--sigma PA]\n"
+                         "         [--loading FILE] [--end-at PA] [--end-time S] [--psd FILE] [--seed K]\n"
+                         "         [--cache DIR] [--reference DIR/NAME] [--set dotted.key=JSON ...]\n"
+                         "Runs the Chapter 5 Wang scene with the loading file (default: the peak rate held,\n"
+                         "wang2018_strain_rate_held.csv) until the back stress reaches --end-at (default\n"
+                         "72e6 Pa; 0: --end-time only) and reads counts, B_r and the downscaled grain-size\n"
+                         "curve at 20 / 43 / 60 / 72 MPa. Files relative to reproductions/chapter5/.\n"
+                         "--reference: RMS of the curves at 43 and 72 MPa against that case's (points).\n");
 }
 
 Options parse(int argc, char** argv) {
   Options o;
-  repro::FlagReader r(argc, argv, usage);
-  while (r.next()) {
-    const std::string& a = r.arg();
-    if (a == "--help" || a == "-h") usage(0);
-    else if (a == "--out") o.out = r.value();
+  repro::read_flags(argc, argv, usage, [&](const std::string& a, repro::FlagReader& r) {
+    if (a == "--out") o.out = r.value();
     else if (a == "--label") o.label = r.value();
     else if (a == "--upscale") o.upscale = r.number();
     else if (a == "--sigma") o.sigma = r.number();
@@ -71,12 +66,11 @@ Options parse(int argc, char** argv) {
     else if (a == "--cache") o.cache = r.value();
     else if (a == "--reference") o.reference = r.value();
     else if (a == "--set") o.sets.push_back(r.value());
-    else usage(1);
-  }
+    else return false;
+    return true;
+  });
   if (o.out.empty() || o.label.empty() || !(o.upscale >= 1)) usage(1);
-  if (o.cache.empty()) o.cache = o.out + "/packing_cache";
-  // The scene resolves its paths against reproductions/chapter5/: the cache must not land there.
-  o.cache = std::filesystem::absolute(o.cache).string();
+  o.cache = repro::packing_cache_dir(o.cache, o.out);
   return o;
 }
 
@@ -92,15 +86,12 @@ psd::GrainSizeCurve read_curve(const std::string& path) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  std::setvbuf(stdout, nullptr, _IOLBF, 0);  // progress lines reach a log file as they come
+  repro::line_buffered_stdout();
   const Options o = parse(argc, argv);
   const std::string dir = std::string(KOLSKY_SOURCE_DIR) + "/reproductions/chapter5";
-  const std::string stem = o.out + "/" + o.label;
-  std::filesystem::create_directories(o.out);
-  if (std::filesystem::exists(stem + ".json")) {
-    std::printf("%s: done before (%s.json); not rerun\n", o.label.c_str(), stem.c_str());
-    return 0;
-  }
+  const std::optional<std::string> case_stem = repro::start_case(o.out, o.label);
+  if (!case_stem) return 0;
+  const std::string& stem = *case_stem;
   ch5::CaseSpec spec;
   spec.label = o.label;
   spec.scene = "scene_wang.json";
@@ -120,10 +111,7 @@ int main(int argc, char** argv) {
   std::printf("%s: N = %g, sigma_lim0 = %.4g GPa, loading %s, end at %.3g MPa or %.3g us\n", o.label.c_str(),
               o.upscale, spec.sigma_lim0 / 1e9, o.loading.c_str(), o.end_at / 1e6, o.end_time * 1e6);
   const ch5::CaseResult c = ch5::run_case(spec, dir, o.cache);
-  if (!c.ok) {
-    std::fprintf(stderr, "%s: failed: %s\n", o.label.c_str(), c.failure.c_str());
-    return 3;
-  }
+  if (!c.ok) return repro::case_failed(o.label, c.failure);
   nlohmann::json j;
   j["label"] = o.label;
   j["upscale"] = c.upscale;
@@ -180,6 +168,6 @@ int main(int argc, char** argv) {
     h.columns.insert(h.columns.end(), {c.grain_count, broken, c.relative_breakage});
   }
   io::write_csv(stem + "_history.csv", h);
-  write_file_atomic(stem + ".json", j.dump(1) + "\n");  // last: marks the case done
+  repro::finish_case(stem, j);
   return 0;
 }
