@@ -95,6 +95,8 @@ json to_json(const CaseResult& c) {
           {"broken_primary", numbers(c.broken_primary)},
           {"broken_secondary", numbers(c.broken_secondary)},
           {"relative_breakage", numbers(c.relative_breakage)},
+          {"held_primary", numbers(c.held_primary)},
+          {"held_primary_at_limit", numbers(c.held_primary_at_limit)},
           {"curves", curves},
           {"gauges", {{"t", numbers(c.gauges.t)}, {"incident", numbers(c.gauges.incident)},
                       {"transmission", numbers(c.gauges.transmission)}}},
@@ -125,6 +127,8 @@ CaseResult case_from_json(const json& j) {
   c.broken_primary = numbers(j.at("broken_primary"));
   c.broken_secondary = numbers(j.at("broken_secondary"));
   c.relative_breakage = numbers(j.at("relative_breakage"));
+  c.held_primary = numbers(j.at("held_primary"));
+  c.held_primary_at_limit = numbers(j.at("held_primary_at_limit"));
   for (const auto& g : j.at("curves"))
     c.curves.push_back({number(g.at("t")), {numbers(g.at("diameter")), numbers(g.at("percent_passing"))}});
   const json& g = j.at("gauges");

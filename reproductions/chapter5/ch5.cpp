@@ -78,6 +78,10 @@ CaseResult case_result(const CaseSpec& spec, double upscale, const harness::Case
     c.broken_primary = harness::on_history(out, "broken_primary");
     c.broken_secondary = harness::on_history(out, "broken_secondary");
     c.relative_breakage = harness::on_history(out, "relative_breakage");
+    if (r.has_probe("primary_held_by_coordination")) {
+      c.held_primary = harness::on_history(out, "primary_held_by_coordination");
+      c.held_primary_at_limit = harness::on_history(out, "primary_held_at_limit");
+    }
     c.grains_initial = static_cast<std::size_t>(r.probe("grain_count").value.front());
     c.grains_final = static_cast<std::size_t>(r.probe("grain_count").value.back());
   }

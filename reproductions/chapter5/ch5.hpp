@@ -56,6 +56,9 @@ struct CaseResult {
   std::vector<double> t, strain, stress_back, stress_avg;
   // Probes of the breakage on the same samples as t (empty without breakage).
   std::vector<double> grain_count, broken_primary, broken_secondary, relative_breakage;
+  // Initial grains at or past their force criterion that c_lim keeps whole at each sample, and
+  // those of them with exactly c_lim contacts (dem::held_by_coordination; empty when c_lim = 0).
+  std::vector<double> held_primary, held_primary_at_limit;
   std::vector<harness::CurveAt> curves;  ///< every microsecond of a breakage run, on t's clock
   harness::GaugeRecord gauges;  ///< bar runs only: on the run's clock
   double arrival_time = 0;

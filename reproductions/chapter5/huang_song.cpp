@@ -68,6 +68,18 @@ void huang_measure(Study& s, const CaseResult& c) {
     m.note(key, fmt("14 x %.0f broken primary parents at t = %.1f us, x (N/2.5)^3 = %g", c.broken_primary[k], c.t[k] * 1e6, to25));
     m.scalar(skey, prim > 0 ? sec / prim : NAN);
     md += fmt("| %.1f MPa | %.0f | %.0f | %s |\n", st / 1e6, prim, sec, i == 0 ? "14,000 / 0" : "42,000 / 300");
+    if (!c.held_primary.empty()) {
+      // The c_lim = 8 protection at this stress (issue 31, H6 decided without changing the run):
+      // the primary daughters if the grains it holds now had broken, all of them or those with
+      // exactly c_lim contacts (a "not more than c_lim" reading of "lower than" in Sec. 5.2.3).
+      const std::string tag = i == 0 ? "18" : "42";
+      const double held = c.held_primary[k], at_limit = c.held_primary_at_limit[k];
+      m.scalar("ch5.huang.daughters_without_clim_hold_" + tag, 14 * (c.broken_primary[k] + held) * to25);
+      m.note("ch5.huang.daughters_without_clim_hold_" + tag,
+             fmt("14 x (%.0f broken + %.0f held by c_lim, %.0f of them at exactly c_lim) x %g", c.broken_primary[k], held,
+                 at_limit, to25));
+      m.scalar("ch5.huang.daughters_clim_inclusive_" + tag, 14 * (c.broken_primary[k] + at_limit) * to25);
+    }
   }
   std::vector<double> broken(c.t.size());
   for (std::size_t k = 0; k < c.t.size(); ++k) broken[k] = c.broken_primary[k] + c.broken_secondary[k];
@@ -84,6 +96,12 @@ void huang_measure(Study& s, const CaseResult& c) {
   for (std::size_t k = 0; k < st.size(); ++k)
     if (st[k] > 1e5) line.x.push_back(st[k] / 1e6), line.y.push_back(br[k]);
   bp.series.push_back(line);
+  if (!c.held_primary.empty()) {  // what c_lim holds back at each stress (issue 31, H6)
+    harness::PlotSeries held = series("broken + initial grains held by c_lim", {}, "dashed");
+    for (std::size_t k = 0; k < st.size(); ++k)
+      if (st[k] > 1e5) held.x.push_back(st[k] / 1e6), held.y.push_back(br[k] + c.held_primary[k]);
+    bp.series.push_back(held);
+  }
   if (std::isfinite(y)) bp.reference_points.push_back({fmt("bilinear yield %.1f MPa", y / 1e6), {y / 1e6}, {0}, {}, {}});
   s.plots->push_back(bp);
   harness::Plot ss = figure("huang_stress_strain.png", "Huang: back-face stress against strain (Fig. 5.10)", "strain (Eq. 5.1)", "stress (MPa)");

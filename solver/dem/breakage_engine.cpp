@@ -93,13 +93,22 @@ BreakageState start_breakage(const BreakageParams& p, std::uint64_t seed, const 
 
 namespace {
 
+// What one pass over the contacts knows of each grain: its load ratio (the criterion's largest
+// over its contacts), the orienting contact of its largest force and its contact counts.
+struct GrainLoads {
+  std::vector<double> ratio;
+  std::vector<int> partner;  // -1: the largest force is a wall's (wall_axis), or no contact
+  std::vector<Vec3> wall_axis;
+  std::vector<int> grain_contacts, wall_contacts;
+};
+
 // One pass over the touching contacts with criterion C (breakage_criterion.hpp), resolved once
 // per check rather than per contact. A grain's load ratio is the largest over its contacts;
 // the largest contact force orients the daughter set. Forces are compared squared,
 // F^2 = (16/9) E'^2 r' delta^3 for a pair (hertz.hpp's force, squared to spare the roots): this
 // pass runs at every check, so it is kept to a few multiplications per touching contact.
 template <class C>
-std::vector<BreakEvent> find_breaks_with(const C& criterion, const DemSystem& sys, const BreakageState& s) {
+GrainLoads scan_loads(const C& criterion, const DemSystem& sys, const BreakageState& s) {
   const Particles& p = sys.particles();
   const auto& mat = sys.materials();
   const std::size_t n = p.size(), n_mat = mat.size();
@@ -116,16 +125,23 @@ std::vector<BreakEvent> find_breaks_with(const C& criterion, const DemSystem& sy
                                                std::numeric_limits<double>::infinity(), 0.0),
                              e_pair[a * n_mat + a]);
   }
-  std::vector<double> inv_r(n), grain_c(n), ratio(n, 0.0), largest2(n, 0.0);
+  GrainLoads out;
+  std::vector<double>& ratio = out.ratio;
+  ratio.assign(n, 0.0);
+  std::vector<double> inv_r(n), grain_c(n), largest2(n, 0.0);
   for (std::size_t i = 0; i < n; ++i) {
     inv_r[i] = 1.0 / p.radius[i];
     grain_c[i] = grain_constant(criterion, s.strength[i], 2.0 * p.radius[i]);
   }
   // The orienting contact of each grain: its partner (axis from the positions, computed only
   // for the grains that break) or, for a wall (partner -1), the wall's normal.
-  std::vector<int> partner(n, -1);
-  std::vector<Vec3> wall_axis(n);
-  std::vector<int> grain_contacts(n, 0), wall_contacts(n, 0);
+  std::vector<int>& partner = out.partner;
+  std::vector<Vec3>& wall_axis = out.wall_axis;
+  std::vector<int>&grain_contacts = out.grain_contacts, &wall_contacts = out.wall_contacts;
+  partner.assign(n, -1);
+  wall_axis.assign(n, Vec3{});
+  grain_contacts.assign(n, 0);
+  wall_contacts.assign(n, 0);
   sys.for_each_touching_contact(
       [&](int i, int j, const Vec3&, double dist) {
         const auto a = static_cast<std::size_t>(i), b = static_cast<std::size_t>(j);
@@ -151,13 +167,28 @@ std::vector<BreakEvent> find_breaks_with(const C& criterion, const DemSystem& sy
         if (force * force > largest2[a]) largest2[a] = force * force, partner[a] = -1, wall_axis[a] = normal;
         ++wall_contacts[a];
       });
+  return out;
+}
+
+GrainLoads scan_loads(const DemSystem& sys, const BreakageState& s) {
+  return std::visit([&](const auto& c) { return scan_loads(c, sys, s); }, s.params.criterion);
+}
+
+int coordination_of(const BreakageState& s, const GrainLoads& l, std::size_t g) {
+  return counted_coordination(s.params, l.grain_contacts[g], l.wall_contacts[g]);
+}
+
+}  // namespace
+
+std::vector<BreakEvent> find_breaks(const DemSystem& sys, const BreakageState& s) {
+  const Particles& p = sys.particles();
+  const GrainLoads l = scan_loads(sys, s);
   std::vector<BreakEvent> events;
-  for (std::size_t g = 0; g < n; ++g) {
-    const int coordination = counted_coordination(s.params, grain_contacts[g], wall_contacts[g]);
-    if (!grain_breaks(s.params, 2.0 * p.radius[g], s.d50_initial, coordination, ratio[g])) continue;
-    Vec3 axis = wall_axis[g];
-    if (partner[g] >= 0) {
-      const Vec3 d = p.x[static_cast<std::size_t>(partner[g])] - p.x[g];
+  for (std::size_t g = 0; g < p.size(); ++g) {
+    if (!grain_breaks(s.params, 2.0 * p.radius[g], s.d50_initial, coordination_of(s, l, g), l.ratio[g])) continue;
+    Vec3 axis = l.wall_axis[g];
+    if (l.partner[g] >= 0) {
+      const Vec3 d = p.x[static_cast<std::size_t>(l.partner[g])] - p.x[g];
       axis = (1.0 / std::sqrt(dot(d, d))) * d;
     }
     events.push_back({static_cast<int>(g), axis});
@@ -165,10 +196,20 @@ std::vector<BreakEvent> find_breaks_with(const C& criterion, const DemSystem& sy
   return events;
 }
 
-}  // namespace
-
-std::vector<BreakEvent> find_breaks(const DemSystem& sys, const BreakageState& s) {
-  return std::visit([&](const auto& c) { return find_breaks_with(c, sys, s); }, s.params.criterion);
+HeldByCoordination held_by_coordination(const DemSystem& sys, const BreakageState& s) {
+  HeldByCoordination held;
+  if (s.params.coordination_limit == 0) return held;
+  const Particles& p = sys.particles();
+  const GrainLoads l = scan_loads(sys, s);
+  for (std::size_t g = 0; g < p.size(); ++g) {
+    if (s.generation[g] != 0 || l.ratio[g] < 1.0) continue;
+    if (!above_comminution_limit(s.params, 2.0 * p.radius[g], s.d50_initial)) continue;
+    const int coordination = coordination_of(s, l, g);
+    if (coordination_allows_break(s.params, coordination)) continue;
+    ++held.primary;
+    if (coordination == s.params.coordination_limit) ++held.primary_at_limit;
+  }
+  return held;
 }
 
 std::size_t apply_breaks(DemSystem& sys, BreakageState& s, const std::vector<BreakEvent>& events) {

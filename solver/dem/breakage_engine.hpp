@@ -62,6 +62,17 @@ struct BreakEvent {
 /// grain against a rigid wall. Requires the forces of the current state.
 std::vector<BreakEvent> find_breaks(const DemSystem& sys, const BreakageState& s);
 
+/// Grains of the initial specimen (generation 0) that the coordination limit keeps whole now:
+/// their load ratio is >= 1 and they are above the comminution limit, but their counted
+/// coordination is >= c_lim (both zero when c_lim = 0). `primary_at_limit`: those of them with
+/// exactly c_lim contacts, the grains a "not more than c_lim" reading of Sec. 5.2.3 ("lower
+/// than a specified limit") would break. A diagnostic of the same pass as find_breaks (the
+/// same loads, the same counts); it changes nothing (issue 31, Huang's count at 42.5 MPa).
+struct HeldByCoordination {
+  std::size_t primary = 0, primary_at_limit = 0;
+};
+HeldByCoordination held_by_coordination(const DemSystem& sys, const BreakageState& s);
+
 /// Replaces each event's grain by its 14 daughters (place_daughters about the event's axis,
 /// turned by the grain's own spin angle), daughters moving with the parent's velocity and spin
 /// (docs/breakage.md), through one DemSystem::edit; records the breaks and the lost mass in the

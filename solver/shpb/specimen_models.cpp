@@ -1,5 +1,7 @@
 #include "shpb/specimen_models.hpp"
 
+#include <memory>
+
 namespace kolsky::shpb {
 
 void add_model_probes(const dem::DemSpecimen& d, ProbeRecords& out) {
@@ -36,6 +38,24 @@ void add_model_probes(const dem::DemSpecimen& d, ProbeRecords& out) {
                  [=](double) { return ledger().lost_volume; }});
   out.push_back({"relative_breakage", "1", "Hardin's B_r of grains + fines against the initial grains (75 um x N, Sec. 5.3.1)",
                  [s, sys](double) { return dem::relative_breakage(*s->breakage(), sys->particles()); }});
+  // One more pass over the contacts per output step (not per check), shared by the two probes
+  // through the output time they are sampled at: a diagnostic only.
+  if (s->breakage()->params.coordination_limit > 0) {
+    struct Held {
+      double t = -1.0;
+      dem::HeldByCoordination held;
+    };
+    auto last = std::make_shared<Held>();
+    auto held = [s, sys, last](double t) -> const dem::HeldByCoordination& {
+      if (t != last->t) *last = {t, dem::held_by_coordination(*sys, *s->breakage())};
+      return last->held;
+    };
+    out.push_back({"primary_held_by_coordination", "1",
+                   "initial grains at or past their force criterion kept whole by c_lim (coordination >= c_lim)",
+                   [=](double t) { return static_cast<double>(held(t).primary); }});
+    out.push_back({"primary_held_at_limit", "1", "of those, the grains with exactly c_lim contacts",
+                   [=](double t) { return static_cast<double>(held(t).primary_at_limit); }});
+  }
   out.push_back({"breakage_kinetic_removed", "J", "kinetic energy that left with the lost mass",
                  [s](double) { return s->breakage()->kinetic_removed; }});
   out.push_back({"breakage_insertion_energy", "J", "change of contact energy when daughters replace parents",
