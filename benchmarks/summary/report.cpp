@@ -54,6 +54,30 @@ void add_ratio_series(Figure& fig, const std::string& what, const std::vector<st
   }
 }
 
+// The batch law's instruction-set variants on the whole step, one row per bench_dem file that
+// ran BM_DemKernelVariant (a variant the CPU lacked was skipped and has no entry).
+std::string variant_table(const std::vector<ResultFile>& files) {
+  static const char* const ids[] = {"dem_portable", "dem_avx2", "dem_avx512"};
+  std::string rows;
+  for (const ResultFile& f : files) {
+    if (f.bench != "bench_dem") continue;
+    std::string cells;
+    bool any = false;
+    for (const char* id : ids) {
+      const Tracked& t = find_tracked(id);
+      const auto v = value(f, t.kernel, t.counter);
+      any = any || v.has_value();
+      cells += " | " + (v ? mega(v) + " (" + ratio_text(ratio(f, t)) + ")" : std::string("not run"));
+    }
+    if (any) rows += "| `" + f.commit + "` | " + short_date(f.time) + cells + " |\n";
+  }
+  if (rows.empty()) return "";
+  return "**The batch law's instruction-set variants** (`BM_DemKernelVariant`, 1 thread, M particle-steps/s and "
+         "the ratio to `BM_Reference/1` per CPU second; docs/dem.md, \"The roofline point\"):\n\n"
+         "| run | date (UTC) | portable (SSE2) | AVX2 | AVX-512 |\n|---|---|---|---|---|\n" +
+         rows + "\n";
+}
+
 // (a) BM_DemCompaction over commits, LAMMPS runs as their own x positions in date order.
 std::string dem_section(const std::vector<ResultFile>& files, const std::string& out, const std::string& gp,
                         std::vector<std::string>& written) {
@@ -131,7 +155,7 @@ std::string dem_section(const std::vector<ResultFile>& files, const std::string&
          "threads at least 1.9 x its 1-thread rate; otherwise it is marked and left out of the figure). LAMMPS rows are the runs of `benchmarks/lammps/run.sh` (median "
          "particle-steps/s of `gran/hertz/history` on one rank); kolsky / LAMMPS ratios from alternated rounds "
          "are in docs/dem.md, \"Performance\".\n\n" +
-         table + "\n";
+         table + "\n" + variant_table(files);
 }
 
 // (b) FE element updates over commits.

@@ -253,7 +253,15 @@ const std::vector<Tracked>& tracked() {
       {"dem_2t", "bench_dem", "BM_DemCompaction/2", "particle_steps_per_s", "BM_Reference/2",
        "DEM BM_DemCompaction, 2 threads", true, false},
       {"fe", "bench_fe", "BM_FeSpecimenStep/10/20", "elem_updates_per_s", "BM_Reference/1",
-       "FE BM_FeSpecimenStep 10 x 20", false, true}};
+       "FE BM_FeSpecimenStep 10 x 20", false, true},
+      // The batch law's instruction-set variants on the whole step (issue 34): each tracked
+      // where the CPU of the run had it (a skipped variant has no entry, so no ratio).
+      {"dem_portable", "bench_dem", "BM_DemKernelVariant/0", "particle_steps_per_s", "BM_Reference/1",
+       "DEM BM_DemKernelVariant portable (SSE2), 1 thread", false, true},
+      {"dem_avx2", "bench_dem", "BM_DemKernelVariant/1", "particle_steps_per_s", "BM_Reference/1",
+       "DEM BM_DemKernelVariant AVX2, 1 thread", false, true},
+      {"dem_avx512", "bench_dem", "BM_DemKernelVariant/2", "particle_steps_per_s", "BM_Reference/1",
+       "DEM BM_DemKernelVariant AVX-512, 1 thread", false, true}};
   return t;
 }
 

@@ -99,6 +99,25 @@ TEST(BenchSummary, RatioNeedsKernelAndReferenceOfTheSameBench) {
   EXPECT_FALSE(ratio(f, tracked()[2]));  // the FE figure comes from bench_fe only
 }
 
+TEST(BenchSummary, EachBatchKernelVariantIsTrackedWhereTheRunHadIt) {
+  // A run on a CPU without AVX-512: its BM_DemKernelVariant/2 was skipped, so it has no entry.
+  json j = bench_json("2026-12-06T10:00:00+00:00", 7e6, 1e8);
+  for (const auto& [name, rate] : {std::pair{"BM_DemKernelVariant/0/real_time", 5e6}, {"BM_DemKernelVariant/1/real_time", 6e6}})
+    j["benchmarks"].push_back({{"name", std::string(name) + "_mean"}, {"run_name", name}, {"run_type", "aggregate"},
+                               {"aggregate_name", "mean"}, {"iterations", 3}, {"real_time", 100.0},
+                               {"cpu_time", 100.0}, {"threads", 1}, {"particle_steps_per_s", rate}});
+  const ResultFile f = parse_result(j, "20261206_0123456789ab_bench_dem.json");
+  const auto ratio_of = [&](const std::string& id) -> std::optional<Ratio> {
+    for (const Tracked& t : tracked())
+      if (t.id == id) return ratio(f, t);
+    ADD_FAILURE() << "no tracked figure " << id;
+    return std::nullopt;
+  };
+  EXPECT_DOUBLE_EQ(ratio_of("dem_portable")->ratio, 0.05);
+  EXPECT_DOUBLE_EQ(ratio_of("dem_avx2")->ratio, 0.06);
+  EXPECT_FALSE(ratio_of("dem_avx512"));
+}
+
 TEST(BenchSummary, CpuRateScalesWallRatesByRealOverCpuTime) {
   json j = bench_json("2026-12-01T10:00:00+00:00", 6e6, 1e8);
   for (auto& b : j["benchmarks"])  // the process had the core 2/3 of the time in the kernel
