@@ -169,7 +169,8 @@ SetSchedule model_schedule(const std::vector<MemberRecord>& log, int ranks) {
     s.critical_path += p.critical_path;
     for (double c : costs) total += c;
   }
-  s.idle_fraction = s.makespan > 0 ? 1 - total / (ranks * s.makespan) : 0;
+  // Clamped: on one rank the sums of the same costs in another order differ in the last bit.
+  s.idle_fraction = s.makespan > 0 ? std::max(0.0, 1 - total / (ranks * s.makespan)) : 0;
   return s;
 }
 

@@ -115,7 +115,8 @@ ScheduleModel simulate_list_schedule(const std::vector<double>& costs, int worke
   }
   m.critical_path = sorted.front();
   const double total = std::accumulate(sorted.begin(), sorted.end(), 0.0);
-  m.idle_fraction = m.makespan > 0 ? 1 - total / (workers * m.makespan) : 0;
+  // Clamped: on one worker the makespan and the total sum the same costs in another order.
+  m.idle_fraction = m.makespan > 0 ? std::max(0.0, 1 - total / (workers * m.makespan)) : 0;
   return m;
 }
 
