@@ -56,13 +56,37 @@ dem::HertzMindlinBatch synthetic_batch() {
   return b;
 }
 
+// The divider's own throughput, the bound docs/dem.md expects for the law: one square root and
+// one division per lane over the same 128-lane arrays, one body compiled per instruction set as
+// hertz_mindlin_batch.cpp does (the law's 6 roots and 7 divisions per contact then allow at
+// most rate / 6.5 contacts per second).
+[[gnu::always_inline]] inline void roots_and_divisions(const double* x, const double* a, double* y, double* z) {
+  for (int i = 0; i < 128; ++i) {
+    y[i] = std::sqrt(x[i]);
+    z[i] = a[i] / x[i];
+  }
+}
+void roots_and_divisions_portable(const double* x, const double* a, double* y, double* z) {
+  roots_and_divisions(x, a, y, z);
+}
+[[gnu::target("avx2")]] void roots_and_divisions_avx2(const double* x, const double* a, double* y, double* z) {
+  roots_and_divisions(x, a, y, z);
+}
+[[gnu::target("avx512f")]] void roots_and_divisions_avx512(const double* x, const double* a, double* y, double* z) {
+  roots_and_divisions(x, a, y, z);
+}
+
+// False, with the benchmark skipped and the reason given, where the CPU or build lacks `variant`.
+bool variant_available(benchmark::State& st, dem::BatchKernel variant) {
+  if (dem::batch_kernel_available(variant)) return true;
+  st.SkipWithError((std::string(dem::batch_kernel_name(variant)) + ": not on this CPU or build").c_str());
+  return false;
+}
+
 void BM_BatchLaw(benchmark::State& st) {
   const auto variant = static_cast<dem::BatchKernel>(st.range(0));
   const int count = static_cast<int>(st.range(1));
-  if (!dem::batch_kernel_available(variant)) {
-    st.SkipWithError((std::string(dem::batch_kernel_name(variant)) + ": not on this CPU or build").c_str());
-    return;
-  }
+  if (!variant_available(st, variant)) return;
   const dem::HertzMindlinBatch start = synthetic_batch();
   dem::HertzMindlinBatch b = start;
   const double dt = 1e-9;
@@ -85,34 +109,9 @@ void BM_BatchLaw(benchmark::State& st) {
   st.SetLabel(std::string(dem::batch_kernel_name(variant)) + ", " + std::to_string(count) + " contacts per call");
 }
 
-// The divider's own throughput, the bound docs/dem.md expects for the law: one square root and
-// one division per lane over the same 128-lane arrays, in the AVX-512 and AVX2 forms (the law's
-// 6 roots and 7 divisions per contact then allow at most rate / 6.5 contacts per second).
-void roots_and_divisions_portable(const double* x, const double* a, double* y, double* z) {
-  for (int i = 0; i < 128; ++i) {
-    y[i] = std::sqrt(x[i]);
-    z[i] = a[i] / x[i];
-  }
-}
-[[gnu::target("avx512f")]] void roots_and_divisions_avx512(const double* x, const double* a, double* y, double* z) {
-  for (int i = 0; i < 128; ++i) {
-    y[i] = std::sqrt(x[i]);
-    z[i] = a[i] / x[i];
-  }
-}
-[[gnu::target("avx2")]] void roots_and_divisions_avx2(const double* x, const double* a, double* y, double* z) {
-  for (int i = 0; i < 128; ++i) {
-    y[i] = std::sqrt(x[i]);
-    z[i] = a[i] / x[i];
-  }
-}
-
 void BM_RootsAndDivisions(benchmark::State& st) {
   const auto variant = static_cast<dem::BatchKernel>(st.range(0));
-  if (!dem::batch_kernel_available(variant)) {
-    st.SkipWithError((std::string(dem::batch_kernel_name(variant)) + ": not on this CPU or build").c_str());
-    return;
-  }
+  if (!variant_available(st, variant)) return;
   alignas(64) double x[128], a[128], y[128], z[128];
   for (int i = 0; i < 128; ++i) x[i] = 1.0 + 0.01 * i, a[i] = 2.0 - 0.003 * i;
   long calls = 0;

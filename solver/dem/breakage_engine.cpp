@@ -125,23 +125,18 @@ GrainLoads scan_loads(const C& criterion, const DemSystem& sys, const BreakageSt
                                                std::numeric_limits<double>::infinity(), 0.0),
                              e_pair[a * n_mat + a]);
   }
-  GrainLoads out;
+  // The orienting contact of each grain: its partner (axis from the positions, computed only
+  // for the grains that break) or, for a wall (partner -1), the wall's normal.
+  GrainLoads out{std::vector<double>(n, 0.0), std::vector<int>(n, -1), std::vector<Vec3>(n), std::vector<int>(n, 0),
+                 std::vector<int>(n, 0)};
   std::vector<double>& ratio = out.ratio;
-  ratio.assign(n, 0.0);
+  std::vector<int>&partner = out.partner, &grain_contacts = out.grain_contacts, &wall_contacts = out.wall_contacts;
+  std::vector<Vec3>& wall_axis = out.wall_axis;
   std::vector<double> inv_r(n), grain_c(n), largest2(n, 0.0);
   for (std::size_t i = 0; i < n; ++i) {
     inv_r[i] = 1.0 / p.radius[i];
     grain_c[i] = grain_constant(criterion, s.strength[i], 2.0 * p.radius[i]);
   }
-  // The orienting contact of each grain: its partner (axis from the positions, computed only
-  // for the grains that break) or, for a wall (partner -1), the wall's normal.
-  std::vector<int>& partner = out.partner;
-  std::vector<Vec3>& wall_axis = out.wall_axis;
-  std::vector<int>&grain_contacts = out.grain_contacts, &wall_contacts = out.wall_contacts;
-  partner.assign(n, -1);
-  wall_axis.assign(n, Vec3{});
-  grain_contacts.assign(n, 0);
-  wall_contacts.assign(n, 0);
   sys.for_each_touching_contact(
       [&](int i, int j, const Vec3&, double dist) {
         const auto a = static_cast<std::size_t>(i), b = static_cast<std::size_t>(j);
