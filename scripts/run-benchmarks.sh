@@ -16,3 +16,12 @@ for b in "$bin_dir"/bench_*; do
   mv "$out.tmp" "$out"
   echo "bench: wrote $out"
 done
+# The Chapter 5 set's list-scheduling model (issue 33): not a timing, the measured members' run
+# times scheduled on 1-64 ranks, tracked beside the speeds (reports/benchmarks/README.md, (d)).
+members=reproductions/chapter5/members_full_measured.json
+schedule="$bin_dir/../reproductions/study_ch5_schedule"
+if [[ -x "$schedule" && -f "$members" ]]; then
+  out="$out_dir/${stamp}_${commit}_bench_ch5_model.json"
+  "$schedule" "$members" 1 2 4 8 16 64 --json "$out" > /dev/null
+  echo "bench: wrote $out"
+fi

@@ -261,6 +261,36 @@ std::string upscale_section(const std::vector<ResultFile>& files, const std::str
 
 }  // namespace
 
+// (d) The Chapter 5 set as an ensemble: the list-scheduling model of its measured members
+// (issue 33), as study_ch5_schedule --json writes it (scripts/run-benchmarks.sh).
+std::string ensemble_section(const std::vector<ResultFile>& files) {
+  std::string s = "## (d) Chapter 5 as an ensemble: the list-scheduling model (`BM_Ch5SetModel`)\n\n";
+  std::string history;
+  const ResultFile* newest = nullptr;
+  for (const ResultFile& f : files) {
+    if (f.bench != "bench_ch5_model") continue;
+    newest = &f;  // files are in date order
+    const auto at16 = value(f, "BM_Ch5SetModel/16", "makespan_s");
+    const auto crit = value(f, "BM_Ch5SetModel/16", "critical_path_s");
+    const auto one = value(f, "BM_Ch5SetModel/1", "makespan_s");
+    history += "| `" + f.commit + "` | " + short_date(f.time) + " | " + (one ? fmt("%.1f", *one / 60) : "") + " | " +
+               (at16 ? fmt("%.1f", *at16 / 60) : "") + " | " + (crit ? fmt("%.1f", *crit / 60) : "") + " |\n";
+  }
+  if (!newest) return s + "No `bench_ch5_model` file (run `make bench` after a full Chapter 5 run).\n\n";
+  s += "Each member's measured run time (`reproductions/chapter5/members_full_measured.json`, from the newest full "
+       "run), scheduled phase by phase, longest first, on K ranks (`reproductions/chapter5/set.hpp`): a model, "
+       "not a timing. The critical path (the phases' longest members summed) is the floor no rank count "
+       "lowers.\n\nNewest, `" + newest->name + "`:\n\n| ranks | makespan (min) | critical path (min) | idle |\n|---|---|---|---|\n";
+  for (const Entry& e : newest->entries) {
+    if (e.key.rfind("BM_Ch5SetModel/", 0) != 0) continue;
+    auto c = [&](const char* k) { return e.counters.count(k) ? e.counters.at(k) : NAN; };
+    s += "| " + e.key.substr(std::string("BM_Ch5SetModel/").size()) + " | " + fmt("%.1f", c("makespan_s") / 60) + " | " +
+         fmt("%.1f", c("critical_path_s") / 60) + " | " + fmt("%.0f %%", 100 * c("idle_fraction")) + " |\n";
+  }
+  return s + "\nOver commits:\n\n| commit | date (UTC) | 1 rank (min) | 16 ranks (min) | critical path (min) |\n"
+             "|---|---|---|---|---|\n" + history + "\n";
+}
+
 std::vector<std::string> write_summary(const std::vector<ResultFile>& files, const std::vector<std::string>& skipped,
                                        const std::string& out, const std::string& gnuplot, std::ostream& log) {
   std::filesystem::create_directories(out);
@@ -278,9 +308,10 @@ std::vector<std::string> write_summary(const std::vector<ResultFile>& files, con
   md += dem_section(files, out, gnuplot, written);
   md += fe_section(files, out, gnuplot, written);
   md += upscale_section(files, out, gnuplot, written);
+  md += ensemble_section(files);
   md += "## Files read\n\n";
   for (const ResultFile& f : files) {
-    const bool used = f.bench == "bench_dem" || f.bench == "bench_fe" || f.bench == "lammps";
+    const bool used = f.bench == "bench_dem" || f.bench == "bench_fe" || f.bench == "lammps" || f.bench == "bench_ch5_model";
     md += "- `" + f.name + "` (" + short_date(f.time) + ")" + (used ? "" : ": no figure of this summary uses " + f.bench) + "\n";
   }
   for (const std::string& s : skipped) md += "- skipped " + s + "\n";

@@ -6,6 +6,8 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <sstream>
+#include <fstream>
 #include <string>
 
 #include "reference_workload.hpp"
@@ -242,6 +244,36 @@ TEST(BenchSummary, ScriptPutsRatiosOnTheSecondAxisAndLabelsCommits) {
   EXPECT_EQ(gp.find("index 2"), std::string::npos);  // the empty series is left out
   f.file = "../x.png";
   EXPECT_THROW(gnuplot_script(f), std::invalid_argument);
+}
+
+// The Chapter 5 ensemble model (study_ch5_schedule --json) is read as a bench file and gets
+// its own section: the newest file's table and one row per file over commits.
+TEST(BenchSummary, EnsembleModelSectionFromTheNewestModelFile) {
+  auto model = [](const std::string& date, double makespan16) {
+    json j;
+    j["context"] = {{"date", date}, {"kind", "model"}};
+    j["benchmarks"] = json::array();
+    for (const auto& [k, m] : {std::pair{1, 4877.0}, {16, makespan16}})
+      j["benchmarks"].push_back({{"name", "BM_Ch5SetModel/" + std::to_string(k)},
+                                 {"run_name", "BM_Ch5SetModel/" + std::to_string(k)},
+                                 {"run_type", "iteration"}, {"iterations", 1}, {"real_time", m},
+                                 {"cpu_time", m}, {"makespan_s", m}, {"critical_path_s", 1573.0},
+                                 {"idle_fraction", k == 1 ? 0.0 : 0.81}});
+    return j;
+  };
+  const std::vector<ResultFile> files = {
+      parse_result(model("2026-12-05T10:00:00+00:00", 1800.0), "20261205_aaaaaaaaaaaa_bench_ch5_model.json"),
+      parse_result(model("2026-12-06T10:00:00+00:00", 1573.0), "20261206_bbbbbbbbbbbb_bench_ch5_model.json")};
+  EXPECT_EQ(files[0].bench, "bench_ch5_model");
+  const std::string out = (std::filesystem::temp_directory_path() / "kolsky_bench_model").string();
+  std::ostringstream log;
+  write_summary(files, {}, out, "/nonexistent/gnuplot", log);
+  std::ifstream in(out + "/README.md");
+  const std::string md((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  EXPECT_NE(md.find("Newest, `20261206_bbbbbbbbbbbb_bench_ch5_model.json`"), std::string::npos) << md;
+  EXPECT_NE(md.find("| 16 | 26.2 | 26.2 | 81 % |"), std::string::npos) << md;
+  EXPECT_NE(md.find("| `aaaaaaaaaaaa` | 2026-12-05 10:00 | 81.3 | 30.0 | 26.2 |"), std::string::npos) << md;
+  std::filesystem::remove_all(out);
 }
 
 // Every tracked file parses, and the upscaling exponent of b193267 follows from its means:

@@ -5,9 +5,14 @@
 // before), each phase's members longest first to the first free rank
 // (ensemble::simulate_list_schedule): makespan, critical path (the phases' longest members
 // summed) and idle fraction, and which member is each phase's longest.
-//   study_ch5_schedule MEMBERS.json [RANKS ...]   (default ranks: 1 2 4 8 16 64)
+//   study_ch5_schedule MEMBERS.json [RANKS ...] [--json OUT]   (default ranks: 1 2 4 8 16 64)
+// --json OUT also writes the model in Google Benchmark's JSON shape (one BM_Ch5SetModel/K entry
+// per rank count, counters makespan_s, critical_path_s, idle_fraction), which
+// scripts/run-benchmarks.sh keeps in benchmarks/results/ for `make bench-summary`.
+#include <chrono>
 #include <cstdio>
 #include <cstdlib>
+#include <ctime>
 #include <exception>
 #include <fstream>
 #include <string>
@@ -20,7 +25,7 @@ using namespace kolsky;
 
 int main(int argc, char** argv) {
   if (argc < 2 || std::string(argv[1]) == "--help")
-    repro::exit_with_usage(argc < 2 ? 1 : 0, "usage: study_ch5_schedule MEMBERS.json [RANKS ...]\n");
+    repro::exit_with_usage(argc < 2 ? 1 : 0, "usage: study_ch5_schedule MEMBERS.json [RANKS ...] [--json OUT]\n");
   std::vector<ch5::MemberRecord> log;
   try {
     std::ifstream f(argv[1]);
@@ -31,7 +36,15 @@ int main(int argc, char** argv) {
     return 2;
   }
   std::vector<int> ranks;
-  for (int i = 2; i < argc; ++i) ranks.push_back(std::atoi(argv[i]));
+  std::string json_out;
+  for (int i = 2; i < argc; ++i) {
+    if (std::string(argv[i]) == "--json") {
+      if (i + 1 >= argc) repro::exit_with_usage(1, "study_ch5_schedule: --json needs a file name\n");
+      json_out = argv[++i];
+    } else {
+      ranks.push_back(std::atoi(argv[i]));
+    }
+  }
   if (ranks.empty()) ranks = {1, 2, 4, 8, 16, 64};
   double total = 0;
   std::vector<std::string> phases;
@@ -52,11 +65,26 @@ int main(int argc, char** argv) {
                 longest->wall_s);
   }
   std::printf("\n| ranks | makespan | critical path | idle |\n|---|---|---|---|\n");
+  nlohmann::json entries = nlohmann::json::array();
   for (int k : ranks) {
     if (k < 1) continue;
     const ch5::SetSchedule s = ch5::model_schedule(log, k);
     std::printf("| %d | %.0f s (%.1f min) | %.0f s | %.0f %% |\n", k, s.makespan, s.makespan / 60, s.critical_path,
                 100 * s.idle_fraction);
+    const std::string name = "BM_Ch5SetModel/" + std::to_string(k);
+    entries.push_back({{"name", name}, {"run_name", name}, {"run_type", "iteration"}, {"iterations", 1},
+                       {"real_time", s.makespan}, {"cpu_time", s.makespan}, {"time_unit", "s"},
+                       {"ranks", k}, {"makespan_s", s.makespan}, {"critical_path_s", s.critical_path},
+                       {"idle_fraction", s.idle_fraction}, {"label", "model of " + std::to_string(log.size()) + " members"}});
+  }
+  if (!json_out.empty()) {
+    char date[32];
+    const std::time_t now = std::chrono::system_clock::to_time_t(std::chrono::system_clock::now());
+    std::strftime(date, sizeof date, "%Y-%m-%dT%H:%M:%S+00:00", std::gmtime(&now));
+    repro::write_json_atomic(json_out, {{"context", {{"date", date}, {"kind", "model"}, {"members_file", argv[1]},
+                                                     {"members", log.size()}, {"member_seconds", total}}},
+                                        {"benchmarks", entries}});
+    std::printf("\nwrote %s\n", json_out.c_str());
   }
   return 0;
 }
