@@ -84,6 +84,7 @@ Json results_json(const ReportInput& in, const std::vector<Score>& scores) {
     e["status"] = to_string(t.status);
     e["pass"] = s.pass;
     if (s.unexpected_pass) e["unexpected_pass"] = true;
+    if (!t.companions.empty()) e["companions"] = t.companions;
     if (s.worst) e["worst_point"] = worst_json(*s.worst);
     if (!s.note.empty()) e["note"] = s.note;
     r["targets"].push_back(std::move(e));
@@ -138,7 +139,10 @@ std::string result_text(const Score& s) {
                   : "<span style=\"color:red\">FAIL</span>";
   if (s.unexpected_pass)
     return "<span style=\"color:orange\">UNEXPECTED PASS</span>: remove the known_deviation note";
-  return "<span style=\"color:orange\">KNOWN DEVIATION</span>: " + t.reason;
+  std::string names;
+  for (const std::string& id : t.companions) names += (names.empty() ? "" : ", ") + ("`" + id + "`");
+  return "<span style=\"color:orange\">KNOWN DEVIATION</span>: " + t.reason +
+         (names.empty() ? "" : " (companions: " + names + ")");
 }
 
 std::string report_markdown(const ReportInput& in, const std::vector<Score>& scores,
@@ -221,6 +225,16 @@ std::vector<Score> score_all(const TargetSet& targets, const Measurements& m) {
   std::vector<Score> scores;
   scores.reserve(targets.targets.size());
   for (const Target& t : targets.targets) scores.push_back(score_target(t, m));
+  // A known deviation is only as explained as its companions: show their verdicts beside it.
+  for (Score& s : scores) {
+    std::string verdicts;
+    for (const std::string& id : s.target->companions)
+      for (const Score& c : scores)
+        if (c.target->id == id)
+          verdicts += (verdicts.empty() ? "" : ", ") + id + " " +
+                      (c.pass ? "passes" : c.measured ? "FAILS (explanation refuted)" : "not measured");
+    if (!verdicts.empty()) s.note += (s.note.empty() ? "" : "; ") + std::string("companions: ") + verdicts;
+  }
   return scores;
 }
 

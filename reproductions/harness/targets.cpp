@@ -171,9 +171,43 @@ std::map<std::string, double> parse_threshold(const Node& e, Kind kind) {
   return out;
 }
 
+/// The ids a known deviation names as the tests of its explanation; that they exist and are
+/// expected to pass is checked once the whole set is read (check_companions).
+std::vector<std::string> parse_companions(const Node& e, const Target& t) {
+  if (t.status != Status::known_deviation)
+    e.fail_at("companions", "only for known_deviation (the targets that test its reason)");
+  const json& list = e.get("companions");
+  if (!list.is_array() || list.empty()) e.fail_at("companions", "must be a non-empty array of target ids");
+  std::vector<std::string> out;
+  for (size_t i = 0; i < list.size(); ++i) {
+    const std::string where = e.at("companions") + "[" + std::to_string(i) + "]";
+    if (!list[i].is_string() || list[i].get<std::string>().empty())
+      throw InputError(e.file(), where, "must be a non-empty target id");
+    out.push_back(list[i].get<std::string>());
+    if (out.back() == t.id) throw InputError(e.file(), where, "a target cannot be its own companion");
+  }
+  return out;
+}
+
+/// A companion must be a target of the same file that is expected to pass: a deviation
+/// explained by another deviation is not explained.
+void check_companions(const TargetSet& s) {
+  for (size_t i = 0; i < s.targets.size(); ++i) {
+    const Target& t = s.targets[i];
+    for (size_t k = 0; k < t.companions.size(); ++k) {
+      const std::string where = "targets[" + std::to_string(i) + "].companions[" + std::to_string(k) + "]";
+      const Target* c = s.find(t.companions[k]);
+      if (c == nullptr) throw InputError(s.path, where, "no target '" + t.companions[k] + "' in this file");
+      if (c->status != Status::expected_pass)
+        throw InputError(s.path, where,
+                         "'" + c->id + "' is itself a known_deviation; a companion must be expected_pass");
+    }
+  }
+}
+
 Target parse_entry(const Node& e, const std::string& repo_root) {
   e.only({"id", "kind", "unit", "reference", "band", "tolerance", "threshold", "why_band", "status",
-          "reason", "description"});
+          "reason", "companions", "description"});
   Target t;
   t.id = e.text("id", false);
   const std::string kind = e.text("kind", false);
@@ -208,6 +242,7 @@ Target parse_entry(const Node& e, const std::string& repo_root) {
   if (t.status == Status::known_deviation) t.reason = e.text("reason", false);
   else if (e.has("reason"))
     e.fail_at("reason", "only for known_deviation (remove it once the target passes)");
+  if (e.has("companions")) t.companions = parse_companions(e, t);
   if (e.has("description")) t.description = e.text("description", true);
   return t;
 }
@@ -251,6 +286,7 @@ TargetSet parse_targets(const json& doc, const std::string& path, const std::str
       throw InputError(path, where + ".id", "duplicate id '" + t.id + "'");
     s.targets.push_back(std::move(t));
   }
+  check_companions(s);
   return s;
 }
 

@@ -57,6 +57,9 @@ struct Target {
   std::string why_band;
   Status status = Status::expected_pass;
   std::string reason;                  // non-empty iff known_deviation
+  /// known_deviation only: expected_pass targets of the same set that test the reason's
+  /// explanation and can fail (CONTRIBUTING: a deviation is accepted only with one).
+  std::vector<std::string> companions;
   std::string description;
 };
 
