@@ -109,6 +109,12 @@ void measure_cases(ch3::Context& x, const std::map<std::string, Ran>& ran) {
   x.m->scalar("ch3.energy_error", std::max({o.m.energy_error, s.m.energy_error, u.m.energy_error, f.m.energy_error}));
   x.m->note("ch3.energy_error", "largest over the four cases of max |held - delivered| up to 13 MPa over the work delivered");
   x.m->scalar("ch3.slope_monodisperse", u.m.slope / 1e6);
+  // Companion of ch3.count_shifted: the shifted count over the original's count moved to the
+  // shifted curve's N, (N_o / N_s)^3 (a pure shift of one curve shape, targets.md 3e.4).
+  const double own_shift = static_cast<double>(o.c.dem.grains) * std::pow(o.upscale / s.text_upscale, 3);
+  x.m->scalar("ch3.count_shifted_pure_shift", static_cast<double>(s.c.dem.grains) * std::pow(s.upscale / s.text_upscale, 3) / own_shift);
+  x.m->note("ch3.count_shifted_pure_shift", "the pure shift of this run's original packing predicts " + fmt("%.0f", own_shift) +
+                                                " grains at N = " + fmt("%g", s.text_upscale) + "; Table 3.1 prints 53,602");
   x.m->scalar("ch3.shifted_to_original_slope", s.m.slope / o.m.slope);
   x.m->note("ch3.shifted_to_original_slope", "shifted " + mpa(s.m.slope) + " MPa, original " + mpa(o.m.slope) + " MPa");
   x.m->trend("ch3.monodisperse_softer", u.m.slope < o.m.slope,
