@@ -146,7 +146,9 @@ void build_and_run(const Case& c, const scene::Scene& sc, std::chrono::steady_cl
     return;
   }
   try {  // a run too short for the wave analysis keeps its face records
-    out.history = sim.analyze(out.run).history;
+    shpb::RunAnalysis a = sim.analyze(out.run);
+    out.history = std::move(a.history);
+    out.waves = std::move(a.waves);
   } catch (const std::invalid_argument& e) {
     out.analysis_failure = e.what();
   }

@@ -117,6 +117,7 @@ struct CaseOutputs {
   std::exception_ptr refusal;
   shpb::RunResult run;         ///< every probe, t, dt, steps, arrival_time
   shpb::SpecimenHistory history;  ///< bar-gauge analysis, t = 0 at the incident arrival
+  shpb::FaceWaves waves;       ///< the face-referred bar waves that analysis read (none for walls)
   std::string analysis_failure;   ///< why history is empty for a completed run
   FaceRecord faces;            ///< filled for a completed run
   DemFinalState dem;
