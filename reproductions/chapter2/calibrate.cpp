@@ -3,19 +3,22 @@
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_multimin.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
 
 namespace kolsky::ch2 {
 
-Table1D table_from_params(const std::vector<double>& strains, const std::vector<double>& x) {
+Table1D table_from_params(const std::vector<double>& strains, const std::vector<double>& x,
+                          bool never_soften) {
   Table1D t;
   t.x = {0.0};
   t.y = {0.0};
-  double p = 0;
+  double p = 0, inc = 0;
   for (size_t k = 0; k < strains.size(); ++k) {
-    p += 1e6 * std::exp(x[k]);
+    inc = never_soften ? inc + 1e6 * std::exp(x[k]) : 1e6 * std::exp(x[k]);
+    p += inc;
     t.x.push_back(strains[k]);
     t.y.push_back(p);
   }
@@ -24,6 +27,24 @@ Table1D table_from_params(const std::vector<double>& strains, const std::vector<
 }
 
 namespace {
+
+/// Least-squares non-decreasing sequence nearest to `v` (pool-adjacent-violators): the
+/// never-softening table closest to a start table whose increments fall.
+std::vector<double> nearest_never_softening(const std::vector<double>& v) {
+  std::vector<double> mean, weight;
+  for (double x : v) {
+    mean.push_back(x), weight.push_back(1);
+    while (mean.size() > 1 && mean[mean.size() - 2] > mean.back()) {
+      const size_t j = mean.size() - 2;
+      mean[j] = (mean[j] * weight[j] + mean.back() * weight.back()) / (weight[j] + weight.back());
+      weight[j] += weight.back();
+      mean.pop_back(), weight.pop_back();
+    }
+  }
+  std::vector<double> out;
+  for (size_t j = 0; j < mean.size(); ++j) out.insert(out.end(), static_cast<size_t>(weight[j]), mean[j]);
+  return out;
+}
 
 struct Problem {
   const BaseScene* base;
@@ -37,7 +58,7 @@ struct Problem {
 
 double evaluate(Problem& pb, const std::vector<double>& x, std::vector<double>& slopes) {
   ++pb.evaluations;
-  const auto table = table_from_params(pb.opts->strains, x);
+  const auto table = table_from_params(pb.opts->strains, x, pb.opts->never_soften);
   double f = 0;
   slopes.clear();
   for (const auto& test : *pb.tests) {
@@ -49,7 +70,8 @@ double evaluate(Problem& pb, const std::vector<double>& x, std::vector<double>& 
     slopes.push_back(s);
     f += std::isfinite(s) ? std::pow(s / test.reference - 1.0, 2) : 1e3;
   }
-  for (size_t k = 2; k < x.size(); ++k) f += pb.opts->smoothness * std::pow(x[k] - x[k - 1], 2);
+  if (!pb.opts->never_soften)
+    for (size_t k = 2; k < x.size(); ++k) f += pb.opts->smoothness * std::pow(x[k] - x[k - 1], 2);
   return f;
 }
 
@@ -73,11 +95,18 @@ CalibrationResult calibrate_dry_eos(const BaseScene& base, const std::vector<Cal
   Table1D s0 = start;
   s0.extrapolate = true;
   double prev = 0;
+  std::vector<double> inc(n);
   for (size_t k = 0; k < n; ++k) {
     const double p = s0(opts.strains[k]);
     if (!(p > prev)) throw std::runtime_error("calibration start table must rise strictly");
-    gsl_vector_set(x, k, std::log((p - prev) / 1e6));
+    inc[k] = p - prev;
     prev = p;
+  }
+  if (opts.never_soften) inc = nearest_never_softening(inc);
+  for (size_t k = 0; k < n; ++k) {
+    // A never-softening start's growth of the increment may be zero; 1 % of the first keeps ln finite.
+    const double v = !opts.never_soften || k == 0 ? inc[k] : std::max(inc[k] - inc[k - 1], 0.01 * inc[0]);
+    gsl_vector_set(x, k, std::log(v / 1e6));
   }
   gsl_vector_set_all(step, opts.initial_step);
   gsl_multimin_function fn{&gsl_objective, n, &pb};
@@ -103,7 +132,7 @@ CalibrationResult calibrate_dry_eos(const BaseScene& base, const std::vector<Cal
   res.iterations = it;
   std::vector<double> best(n);
   for (size_t k = 0; k < n; ++k) best[k] = gsl_vector_get(m->x, k);
-  res.table = table_from_params(opts.strains, best);
+  res.table = table_from_params(opts.strains, best, opts.never_soften);
   res.objective = evaluate(pb, best, res.slopes);
   res.evaluations = pb.evaluations;
   gsl_multimin_fminimizer_free(m);

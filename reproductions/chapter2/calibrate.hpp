@@ -43,13 +43,19 @@ struct CalibrationOptions {
   double size_tolerance = 2e-3;  ///< simplex size (in ln P) at which it stops
   double initial_step = 0.15;    ///< simplex step in ln P
   double smoothness = 1e-3;      ///< lambda
+  /// Tables that never soften only (the companion of ch2.trend_eos_stiffening): x0 = ln(first
+  /// increment), xk = ln(growth of the increment), so every trial table's increments are
+  /// non-decreasing by construction; no smoothness prior (the constraint takes its place).
+  bool never_soften = false;
 };
 
 /// Starts from `start` (interpolated at opts.strains). Throws std::runtime_error if GSL fails.
 CalibrationResult calibrate_dry_eos(const BaseScene& base, const std::vector<CalibrationTest>& tests,
                                     const Table1D& start, const CalibrationOptions& opts);
 
-/// Table (0, 0), (strains[k], P_k) from the parameter vector.
-Table1D table_from_params(const std::vector<double>& strains, const std::vector<double>& x);
+/// Table (0, 0), (strains[k], P_k) from the parameter vector (CalibrationOptions::never_soften
+/// picks its meaning).
+Table1D table_from_params(const std::vector<double>& strains, const std::vector<double>& x,
+                          bool never_soften = false);
 
 }  // namespace kolsky::ch2
