@@ -17,6 +17,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "dem/breakage_model.hpp"
 #include "scene/scene.hpp"
 #include "shpb/simulation.hpp"
 
@@ -30,7 +31,7 @@ nlohmann::json wang_scene(double n) {
   auto j = nlohmann::json::parse(f);
   j["specimen"]["upscale"] = n;
   j["specimen"]["packing_cache"] = std::string(KOLSKY_BENCH_CACHE) + "/ch5";
-  j["specimen"]["breakage"]["sigma_lim0"] = 1.53e9 * n;
+  j["specimen"]["breakage"]["sigma_lim0"] = dem::upscaled_sigma_lim0(1.53e9, n, j["specimen"]["breakage"]["m1"].get<double>());
   j["specimen"]["breakage"]["fines_d_min"] = 7.5e-6 * n;
   j["time"]["end"] = 60e-6;
   return j;

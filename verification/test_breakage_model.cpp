@@ -154,6 +154,20 @@ TEST(BreakageCriterion, SizeEffectFollowsDToTheTwoMinusNineOverM1) {
   }
 }
 
+// Eq. 5.17 between two N: the Chapter 5 drivers wrote it as sigma_ref N / N_ref (m1 = 3 built
+// in) and now call sigma_lim0_between with the scene's m1; for m1 = 3 it must give those bits
+// (pow(x, 1) is exact), or every Chapter 5 baseline would move. For another m1 it is the law.
+TEST(BreakageUpscaling, Eq517BetweenTwoNIsTheProductFormBitwiseForM1Three) {
+  for (double sigma : {1.53e9, 2.7e9, 3.6e9, 2.37e9})
+    for (double n_ref : {1.0, 1.5, 2.0, 2.5, 3.0})
+      for (double n : {1.0, 1.25, 1.5, 2.0, 2.2, 2.5, 3.0, 3.3}) {
+        EXPECT_EQ(sigma_lim0_between(sigma, n_ref, n, 3.0), sigma * n / n_ref) << sigma << " " << n_ref << " " << n;
+        EXPECT_EQ(upscaled_sigma_lim0(sigma, n / n_ref, 3.0), sigma * (n / n_ref));
+      }
+  EXPECT_NEAR(sigma_lim0_between(1e9, 2.0, 8.0, 6.0), 2e9, 1e-6);  // (8 / 2)^(3/6) = 2
+  EXPECT_DOUBLE_EQ(sigma_lim0_between(1e9, 1.0, 2.0, 3.0), upscaled_sigma_lim0(1e9, 2.0, 3.0));
+}
+
 TEST(BreakageVariability, Eq515IsUniformOnItsRange) {
   const HertzianContactCriterion p;
   const double lo = (1 - p.var_b) / p.var_a, hi = -p.var_b / p.var_a;  // U = 1 and U = 0

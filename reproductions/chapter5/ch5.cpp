@@ -16,6 +16,10 @@ nlohmann::json read_json(const std::string& path) {
   return nlohmann::json::parse(f);
 }
 
+double scene_m1(const std::string& dir, const std::string& scene) {
+  return read_json(dir + "/" + scene).at("specimen").at("breakage").at("m1").get<double>();
+}
+
 harness::Case make_case(const CaseSpec& spec, const std::string& dir, const std::string& cache, unsigned perturb_seed) {
   harness::Case c;
   c.label = spec.label;

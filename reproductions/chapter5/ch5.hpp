@@ -124,6 +124,10 @@ double broken_at_stress(const CaseResult& c, double stress);
 
 nlohmann::json read_json(const std::string& path);
 
+/// m1 of a scene's breakage (specimen.breakage.m1; 3 in every scene of this folder): the
+/// exponent of Eq. 5.17 (dem::sigma_lim0_between), read from the scene file as written.
+double scene_m1(const std::string& dir, const std::string& scene);
+
 /// Yield stress of a broken-count curve on a semi-log plot (Fig. 5.12): the intersection of the
 /// two straight lines (count against log10 stress) that fit it best with one break point, the
 /// construction used for yield on e-log p curves; NaN with fewer than 6 points above zero count.

@@ -7,6 +7,7 @@
 #include <cstdio>
 
 #include "chapter5/studies.hpp"
+#include "dem/breakage_model.hpp"
 #include "scene/csv_load.hpp"
 
 namespace kolsky::ch5 {
@@ -28,7 +29,8 @@ CaseSpec huang_plan(const Study& s) {
   spec.upscale = h.at("n").get<double>();
   spec.label = fmt("Huang N = %g", spec.upscale);
   // sigma_lim0 is the text's 3.6 GPa at N = 2.5; another N carries it by Eq. 5.17.
-  spec.sigma_lim0 = s.printed("ch5.huang.sigma_lim0") * spec.upscale / s.printed("ch5.huang.upscale");
+  spec.sigma_lim0 = dem::sigma_lim0_between(s.printed("ch5.huang.sigma_lim0"), s.printed("ch5.huang.upscale"),
+                                            spec.upscale, scene_m1(s.dir, spec.scene));
   spec.end_time = h.at("end_time").get<double>();
   spec.fines_d_min = s.printed("ch5.huang.fines_d_min");
   // A study's cases file (KOLSKY_CH5_CASES) may stop the loading at a back stress and add scene
@@ -148,7 +150,8 @@ SongPlan song_plan(const Study& s) {
   CaseSpec spec;
   spec.scene = "scene_song.json";
   spec.upscale = g.at("n").get<double>();
-  spec.sigma_lim0 = s.printed("ch5.song.sigma_lim0") * spec.upscale / 2.0;  // Eq. 5.17 from the text's N = 2
+  // Eq. 5.17 from the text's N = 2.
+  spec.sigma_lim0 = dem::sigma_lim0_between(s.printed("ch5.song.sigma_lim0"), 2.0, spec.upscale, scene_m1(s.dir, spec.scene));
   spec.end_time = g.at("end_time").get<double>();
   spec.fines_d_min = s.printed("ch5.wang.fines_d_min");
   spec.label = fmt("Song N = %g, breakage", spec.upscale);

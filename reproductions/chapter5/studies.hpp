@@ -56,6 +56,7 @@ struct SpeedPlan {
 };
 struct WangPlan {
   double n_ref = 0, n_pair = 0, sig1 = 0, sig15 = 0, sig_ref = 0, sig_pair = 0, end = 0;
+  double m1 = 3;              ///< scene_wang.json's, the exponent of Eq. 5.17
   bool until = false;         ///< cases "load_until": the pair loaded until a stress
   // The pass rules' numbers (targets files), read before any run so that a missing one fails fast.
   double pair_low_rms = 0, pair_high_frac = 0, variants_rms = 0, nobreak_ratio = 0, clim0_ratio = 0, clim0_breaks = 0;

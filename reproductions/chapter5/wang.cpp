@@ -9,6 +9,7 @@
 #include "chapter5/backcalc.hpp"
 #include "chapter5/studies.hpp"
 #include "common/stats.hpp"
+#include "dem/breakage_model.hpp"
 
 namespace kolsky::ch5 {
 
@@ -172,7 +173,7 @@ void wang_measure(Study& s, const WangPlan& p, const WangRuns& runs) {
                                                     ": increasing in N");
   harness::Plot sn = figure("sigma_vs_n.png", "sigma_lim0 against the upscaling factor (Fig. 5.16)", "N", "sigma_lim0 (GPa)");
   harness::PlotSeries law = series("Eq. 5.17 from N = " + fmt("%g", n_ref), {}, "dashed");
-  for (double n = 1; n <= 3.0001; n += 0.1) law.x.push_back(n), law.y.push_back(sig_ref * n / n_ref / 1e9);
+  for (double n = 1; n <= 3.0001; n += 0.1) law.x.push_back(n), law.y.push_back(dem::sigma_lim0_between(sig_ref, n_ref, n, p.m1) / 1e9);
   sn.series.push_back(law);
   harness::PlotSeries got = series("back-calculated", bn, "linespoints");
   for (double v : bs) got.y.push_back(v / 1e9);

@@ -10,6 +10,7 @@
 
 #include "chapter5/case_json.hpp"
 #include "chapter5/studies.hpp"
+#include "dem/breakage_model.hpp"
 
 namespace kolsky::ch5 {
 
@@ -62,7 +63,7 @@ void plan_chains(const Study& s, WangPlan& p) {
   for (const auto& jn : w.at("backcalc_n")) {
     BackCalcPlan b;
     b.n = jn.get<double>();
-    b.settings.guess = p.sig_ref * b.n / p.n_ref;
+    b.settings.guess = dem::sigma_lim0_between(p.sig_ref, p.n_ref, b.n, p.m1);
     b.settings.factor = factor;
     b.settings.max_evaluations = cap;
     b.settings.stress_lo = 1e6;
@@ -80,7 +81,7 @@ void plan_chains(const Study& s, WangPlan& p) {
     sp.is_ref = std::abs(sp.n - p.n_ref) < 1e-12;
     for (std::size_t k = 0; k < p.backcalcs.size() && sp.backcalc < 0; ++k)
       if (std::abs(p.backcalcs[k].n - sp.n) < 1e-12) sp.backcalc = static_cast<long>(k);
-    sp.eq517 = wang_spec(s, fmt("Wang N = %g (Eq. 5.17)", sp.n), sp.n, p.sig_ref * sp.n / p.n_ref);
+    sp.eq517 = wang_spec(s, fmt("Wang N = %g (Eq. 5.17)", sp.n), sp.n, dem::sigma_lim0_between(p.sig_ref, p.n_ref, sp.n, p.m1));
     if (!sp.is_ref && sp.n >= seeds_from_n) sp.seeds = seeds;
     p.speed.push_back(sp);
   }
@@ -103,7 +104,10 @@ WangPlan wang_plan(const Study& s) {
   // The text's sigma_lim0 at N = 1 and 1.5. In general the reference N carries Eq. 5.17's value
   // sigma(1) N and the pair Eq. 5.17 times the text's own departure from it, 2.37 / 2.295:
   // exactly the text's two values at N = 1 and 1.5.
-  p.sig_ref = p.sig1 * p.n_ref, p.sig_pair = p.sig_ref * (p.n_pair / p.n_ref) * p.sig15 / (1.5 * p.sig1);
+  p.m1 = scene_m1(s.dir, "scene_wang.json");
+  p.sig_ref = dem::sigma_lim0_between(p.sig1, 1.0, p.n_ref, p.m1);
+  p.sig_pair = dem::upscaled_sigma_lim0(p.sig_ref, p.n_pair / p.n_ref, p.m1) * p.sig15 /
+               dem::upscaled_sigma_lim0(p.sig1, 1.5, p.m1);
   // Loaded until a stress (issue 31, H2; README "H2 and H3"): with "load_until" in the cases
   // file the runs hold the peak rate and end once the back stress reaches it (the text compares
   // the pair at 72 MPa), within until_end_time; the variants of Fig. 5.8 keep the scene's history.
@@ -113,7 +117,7 @@ WangPlan wang_plan(const Study& s) {
   // The twin experiment runs at twin_n (default: the pair's N, whose run is then the synthetic curve).
   p.n_twin = w.value("twin_n", p.n_pair);
   p.twin_is_pair = std::abs(p.n_twin - p.n_pair) < 1e-12;
-  p.sig_twin = p.twin_is_pair ? p.sig_pair : p.sig_ref * p.n_twin / p.n_ref;
+  p.sig_twin = p.twin_is_pair ? p.sig_pair : dem::sigma_lim0_between(p.sig_ref, p.n_ref, p.n_twin, p.m1);
   if (!p.twin_is_pair) p.twin_ref = wang_spec(s, fmt("twin N = %g (synthetic curve)", p.n_twin), p.n_twin, p.sig_twin);
   // The breakage-criterion variants (Fig. 5.8), at the same sigma_lim0, at variants_n; loaded
   // until a stress, the pair ran another history: the variants' base reruns the scene's.

@@ -22,6 +22,7 @@
 
 #include "chapter5/backcalc.hpp"
 #include "common/stats.hpp"
+#include "dem/breakage_model.hpp"
 #include "io/csv.hpp"
 #include "scene/json_reader.hpp"
 #include "studies/study_cli.hpp"
@@ -114,7 +115,7 @@ int main(int argc, char** argv) {
   }
   std::printf("reference %s: %zu samples to back stress %.1f MPa\n", o.reference.c_str(), reference.t.size(),
               reference.stress_back.back() / 1e6);
-  const double eq517 = kSigmaN1 * o.upscale;  // Eq. 5.17 with m1 = 3 from the N = 1 value
+  const double eq517 = dem::upscaled_sigma_lim0(kSigmaN1, o.upscale, ch5::scene_m1(dir, "scene_wang.json"));
   std::vector<double> sigmas;
   for (long seed : o.seeds) {
     char name[64];

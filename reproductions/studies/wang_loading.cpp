@@ -20,6 +20,7 @@
 #include <nlohmann/json.hpp>
 
 #include "chapter5/ch5.hpp"
+#include "dem/breakage_model.hpp"
 #include "io/csv.hpp"
 #include "studies/study_cli.hpp"
 
@@ -98,9 +99,11 @@ int main(int argc, char** argv) {
   spec.upscale = o.upscale;
   // The set's rule (wang.cpp): the text's values at N = 1 and 1.5, Eq. 5.17 with the text's
   // own departure from it (2.37 / 2.295) elsewhere.
+  const double m1 = ch5::scene_m1(dir, spec.scene);
   spec.sigma_lim0 = o.sigma > 0 ? o.sigma
                     : o.upscale == 1 ? kSigmaN1
-                                     : kSigmaN1 * o.upscale * kSigmaN15 / (1.5 * kSigmaN1);
+                                     : dem::upscaled_sigma_lim0(kSigmaN1, o.upscale, m1) * kSigmaN15 /
+                                           dem::upscaled_sigma_lim0(kSigmaN1, 1.5, m1);
   spec.fines_d_min = kFinesDMin;
   spec.end_time = o.end_time;
   spec.loading_file = o.loading;

@@ -71,6 +71,11 @@ double upscaled_sigma_lim0(double sigma_lim0_original, double upscaling_factor, 
   return sigma_lim0_original * std::pow(upscaling_factor, 3.0 / m1);
 }
 
+double sigma_lim0_between(double sigma_ref, double n_ref, double n, double m1) {
+  const double e = 3.0 / m1;
+  return sigma_ref * std::pow(n, e) / std::pow(n_ref, e);
+}
+
 double critical_force(double sigma_lim, double r_eff, double e_eff) {
   // F = s pi a^2 with a^3 = q F, q = 3 r'/(4 E')  =>  F = s pi (q F)^(2/3)  =>  F^(1/3) = s pi
   // q^(2/3)  =>  F = (s pi)^3 q^2. Products only: a few ulp, no pow.

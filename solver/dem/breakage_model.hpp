@@ -73,6 +73,11 @@ void validate_against_d50(const BreakageParams& p, double d50_initial,
 /// Eq. 5.17: sigma_lim0 for an N-times upscaled specimen from that of the original (N = 1).
 double upscaled_sigma_lim0(double sigma_lim0_original, double upscaling_factor, double m1);
 
+/// Eq. 5.17 between two upscaling factors: sigma_lim0 at N from its value at N_ref,
+/// sigma_ref (N / N_ref)^(3/m1), evaluated as sigma_ref N^(3/m1) / N_ref^(3/m1). With m1 = 3
+/// (every Chapter 5 scene) pow(x, 1) is x exactly, so this is sigma_ref N / N_ref to the bit.
+double sigma_lim0_between(double sigma_ref, double n_ref, double n, double m1);
+
 /// F_crit = sigma_lim^3 pi^3 (3 r_eff / (4 e_eff))^2 (N): the force at which the mean Hertz
 /// pressure F / (pi a(F)^2), a = (3 F r_eff / (4 e_eff))^(1/3), equals sigma_lim (Eq. 5.13
 /// solved for F in closed form; no iteration). Pa, m, Pa.
