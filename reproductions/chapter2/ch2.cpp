@@ -1,16 +1,17 @@
 #include "chapter2/ch2.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
+#include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <limits>
 #include <sstream>
 #include <stdexcept>
 
-#include "core/errors.hpp"
-#include "scene/scene.hpp"
-#include "shpb/simulation.hpp"
+#include "core/atomic_file.hpp"
+#include "core/hash.hpp"
+#include "harness/case_pipeline.hpp"
 
 namespace kolsky::ch2 {
 
@@ -32,51 +33,67 @@ double unloading_modulus_for(const Table1D& t) {
   return std::max(1e9, 1.2 * steepest);
 }
 
+namespace {
+
+/// The table as the scene's loading_curve CSV in `dir`, named by its content (FNV-1a of the
+/// text): written once, so that the same table is the same file and the case's content key
+/// (which takes a file by its path) names the table too.
+std::string eos_table_file(const std::string& dir, const Table1D& t) {
+  // Every digit a double needs (17), so that the scene reader gets the table's exact values.
+  std::string text = "strain,stress_pa\n";
+  char line[64];
+  for (size_t k = 0; k < t.x.size(); ++k) {
+    std::snprintf(line, sizeof line, "%.17g,%.17g\n", t.x[k], t.y[k]);
+    text += line;
+  }
+  char name[32];
+  std::snprintf(name, sizeof name, "eos_%016llx.csv", static_cast<unsigned long long>(fnv1a_64(text)));
+  const std::string path = std::filesystem::absolute(std::filesystem::path(dir) / name).string();
+  if (!std::filesystem::exists(path)) {
+    std::filesystem::create_directories(dir);
+    write_file_atomic(path, text);
+  }
+  return path;
+}
+
+}  // namespace
+
 CaseResult run_case(const BaseScene& base, const CaseSpec& c) {
+  harness::Case hc;
+  hc.label = c.label;
+  hc.scene_path = base.path;
+  hc.scene = base.json;
+  auto set = [&hc](const std::string& key, nlohmann::json value) { hc.changes.push_back({key, std::move(value)}); };
+  set("specimen.tube_youngs_modulus", c.tube.youngs_modulus);
+  set("specimen.tube_poisson_ratio", c.tube.poisson_ratio);
+  set("specimen.tube_density", c.tube.density);
+  set("specimen.tube_thickness", c.tube.thickness);
+  set("specimen.friction_faces", c.friction);
+  set("specimen.friction_tube", c.friction);
+  if (c.length > 0) set("specimen.length", c.length);
+  if (c.n_radial > 0) set("specimen.n_radial", c.n_radial);
+  if (c.n_axial > 0) set("specimen.n_axial", c.n_axial);
+  if (!c.bars.empty()) set("bars.kind", c.bars);
+  if (c.bar_mesh_radial > 0) set("bars.mesh_radial", c.bar_mesh_radial);
+  if (c.bar_element_length > 0) set("bars.element_length", c.bar_element_length);
+  if (c.end_time > 0) set("time.end", c.end_time);
+  if (!c.pulse_file.empty()) set("pulse.file", c.pulse_file);
+  set("pulse.scale", c.pulse_scale);
   CaseResult out;
-  const auto start = std::chrono::steady_clock::now();
   try {
-    auto j = base.json;
-    auto& s = j["specimen"];
-    s["tube_youngs_modulus"] = c.tube.youngs_modulus;
-    s["tube_poisson_ratio"] = c.tube.poisson_ratio;
-    s["tube_density"] = c.tube.density;
-    s["tube_thickness"] = c.tube.thickness;
-    s["friction_faces"] = c.friction;
-    s["friction_tube"] = c.friction;
-    if (c.length > 0) s["length"] = c.length;
-    if (c.n_radial > 0) s["n_radial"] = c.n_radial;
-    if (c.n_axial > 0) s["n_axial"] = c.n_axial;
-    if (!c.bars.empty()) j["bars"]["kind"] = c.bars;
-    if (c.bar_mesh_radial > 0) j["bars"]["mesh_radial"] = c.bar_mesh_radial;
-    if (c.bar_element_length > 0) j["bars"]["element_length"] = c.bar_element_length;
-    if (c.end_time > 0) j["time"]["end"] = c.end_time;
-    if (!c.pulse_file.empty()) j["pulse"]["file"] = c.pulse_file;
-    j["pulse"]["scale"] = c.pulse_scale;
-    auto sc = scene::parse_scene(j, base.path, base.dir);
-    auto& fe_params = std::get<fe::FeSpecimenParams>(sc.spec.specimen);
-    auto& mat = std::get<fe::PseudoTensorModeI>(fe_params.material);
-    mat.eos.loading = c.eos;
-    mat.eos.loading.extrapolate = true;
-    mat.eos.unloading_bulk_modulus = unloading_modulus_for(c.eos);
-    mat.validate("chapter2.eos");
-    shpb::SimulatedShpb sim(sc.spec);
-    const auto run = sim.run();
-    out.dt = run.dt;
-    out.steps = run.steps;
-    if (!run.complete) {
-      out.failure = run.failure;
-    } else {
-      const auto setup = sim.analysis_setup();
-      const auto waves =
-          run.face_waves(setup.incident.youngs_modulus, setup.transmission.youngs_modulus);
-      out.h = shpb::analyze(waves, setup);
-      out.ok = true;
-    }
+    set("specimen.loading_curve", eos_table_file(base.table_dir, c.eos));
+    set("specimen.unloading_modulus", unloading_modulus_for(c.eos));
   } catch (const std::exception& e) {
     out.failure = e.what();
+    return out;
   }
-  out.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const harness::CaseOutputs o = harness::run_case(hc);
+  out.ok = o.ok && o.analysis_failure.empty();
+  out.failure = o.ok ? o.analysis_failure : o.failure;
+  out.h = o.history;
+  out.dt = o.run.dt;
+  out.steps = o.run.steps;
+  out.wall_s = o.wall_s;
   return out;
 }
 

@@ -1,7 +1,7 @@
-// Chapter 2 reproduction helpers: one FE SHPB case built from the set's scene (a JSON copy with
-// the study's variant keys changed, then the compaction EOS table swapped in the typed spec),
-// its classic analysis, and the measurements the studies share (slope, plateau rate,
-// equilibrium time, dissipation at a strain).
+// Chapter 2 reproduction helpers: one FE SHPB case, the set's scene with the study's variant
+// keys changed (the compaction EOS table too, as a CSV file the scene names), run and analysed
+// through the sets' case pipeline (harness/case_pipeline.hpp), and the measurements the
+// studies share (slope, plateau rate, equilibrium time, dissipation at a strain).
 #pragma once
 #include <nlohmann/json.hpp>
 #include <string>
@@ -42,13 +42,16 @@ struct CaseResult {
   long steps = 0;
 };
 
-/// Base scene (the raw JSON, for variants) and the folder its relative paths resolve against.
+/// Base scene (the raw JSON, for variants), the folder its relative paths resolve against, and
+/// the folder the cases' EOS tables are written to (one CSV per distinct table, named by its
+/// content, written once).
 struct BaseScene {
   nlohmann::json json;
   std::string path, dir;
+  std::string table_dir;
 };
 
-/// Runs the case; a solver failure is returned in CaseResult, not thrown.
+/// Runs the case; a refused scene or a solver failure is returned in CaseResult, not thrown.
 CaseResult run_case(const BaseScene& base, const CaseSpec& c);
 
 /// Least-squares slope of stress_back (Pa) against strain over samples with t <= t_end and

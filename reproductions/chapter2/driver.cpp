@@ -61,7 +61,7 @@ Inputs read_inputs(const repro::DriverArgs& args, const harness::ReportInput& re
   in.targets = ch2::read_json(args.set_dir() + "/targets.json");
   in.target_set = harness::load_targets(rep.targets_path, args.repo_root);
   const std::string scene_path = args.set_dir() + "/scene_" + args.scale + ".json";
-  in.base = {repro::read_scene_json(scene_path, args.perturb_seed), scene_path, args.set_dir()};
+  in.base = {repro::read_scene_json(scene_path, args.perturb_seed), scene_path, args.set_dir(), rep.out_dir + "/eos_tables"};
   const std::string data = args.repo_root + "/data/digitized/chapter2/";
   in.reported = ch2::read_json(data + "reported.json");
   in.wall = in.base.json.at("specimen").at("tube_thickness").get<double>();
