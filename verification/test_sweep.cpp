@@ -225,3 +225,27 @@ TEST(Sweep, TheTimeLeftIsEstimatedFromTheMembersRun) {
 
 }  // namespace
 }  // namespace kolsky::sweep
+
+namespace kolsky::sweep {
+namespace {
+
+// A breakage-strength sweep is about the grain counts (Sec. 5.3): a DEM specimen's member
+// reports them, and they obey the replacement's bookkeeping (each break: -1 + 14 grains,
+// Table 5.3), so grains_end = grains_start + 13 (primary + secondary breaks).
+TEST(Sweep, ADemMemberReportsItsGrainCountsAndBreaks) {
+  const std::string dir = std::string(KOLSKY_SOURCE_DIR) + "/data/examples";
+  std::ifstream f(dir + "/dem_breakage_example.json");
+  json scene = json::parse(f);
+  scene["specimen"]["breakage"]["sigma_lim0"] = 1e9;  // weak enough that grains break (66 + 54)
+  const json out = run_scene(scene, dir + "/dem_breakage_example.json", dir, MemberOptions{});
+  ASSERT_EQ(out.at("status"), "ok") << out.dump();
+  const json& s = out.at("summary");
+  const double start = s.at("grains_start"), end = s.at("grains_end");
+  const double primary = s.at("broken_primary"), secondary = s.at("broken_secondary");
+  EXPECT_GT(primary, 0);
+  EXPECT_EQ(end, start + 13 * (primary + secondary));
+  EXPECT_DOUBLE_EQ(s.at("grain_growth_ratio").get<double>(), end / start);
+}
+
+}  // namespace
+}  // namespace kolsky::sweep
