@@ -1,14 +1,12 @@
 #include "chapter4/calibration.hpp"
 
-#include <gsl/gsl_errno.h>
-#include <gsl/gsl_roots.h>
-
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <limits>
 
 #include "common/format.hpp"
+#include "harness/root_search.hpp"
 
 namespace kolsky::ch4 {
 
@@ -51,112 +49,64 @@ CalPoint cal_point(const CaseResult& c, const Measures& m, bool reused) {
   return p;
 }
 
-namespace {
-
-// GSL's default handler aborts on a non-finite function value; the finder's own status
-// codes are checked instead (as in eos/three_phase_fit.cpp).
-struct GslHandlerOff {
-  gsl_error_handler_t* previous = gsl_set_error_handler_off();
-  ~GslHandlerOff() { gsl_set_error_handler(previous); }
-};
-
-struct Context {
-  const std::function<CalPoint(double)>* evaluate = nullptr;
-  Calibration* cal = nullptr;
-  int budget = 0;
-  std::string error;
-  /// f(x) = value(x) - target, from an earlier point when x was evaluated before.
-  double f(double x) {
-    for (const auto& p : cal->points)
-      if (p.x == x) return p.value - cal->target;
-    if (!error.empty()) return NAN;
-    if (cal->evaluations >= budget) {
-      error = "evaluation budget (" + std::to_string(budget) + ") spent";
-      return NAN;
-    }
-    CalPoint p = (*evaluate)(k_of_x(x));
-    p.x = x;  // the finder's x exactly (k_of_x/x_of_k round trip is not exact)
-    if (!p.reused) ++cal->evaluations;
-    cal->points.push_back(p);
-    if (!std::isfinite(p.value)) error = "no initial modulus at k = " + fmt("%.10g", p.k) + " (" + p.label + ")";
-    return p.value - cal->target;
-  }
-};
-
-double trampoline(double x, void* params) { return static_cast<Context*>(params)->f(x); }
-
-}  // namespace
-
 Calibration calibrate(const std::function<CalPoint(double k)>& evaluate, double target,
                       const CalSettings& s) {
   Calibration cal;
   cal.target = target;
-  Context ctx{&evaluate, &cal, s.max_evaluations, ""};
-  // Start points (reused where the set already ran them), sorted by x.
-  for (double k : s.start_ks) {
-    if (ctx.cal->evaluations >= s.max_evaluations) break;
+  harness::RootSearchSettings rs;
+  for (double k : s.start_ks) rs.start_x.push_back(x_of_k(k));
+  rs.f_tolerance = s.resolution_rtol * std::abs(target);
+  rs.x_tolerance = s.x_tolerance;
+  rs.max_evaluations = s.max_evaluations;
+  // f(x) = M(x) - target. A start point runs at its own k (the k -> x -> k round trip is not
+  // exact), any other at k_of_x(x); the point keeps the finder's x exactly.
+  auto f = [&](double x) {
+    double k = k_of_x(x);
+    for (size_t i = 0; i < s.start_ks.size(); ++i)
+      if (rs.start_x[i] == x) k = s.start_ks[i];
     CalPoint p = evaluate(k);
-    p.x = x_of_k(k);
-    if (!p.reused) ++cal.evaluations;
+    p.x = x;
     cal.points.push_back(p);
-  }
-  std::vector<const CalPoint*> sorted;
-  for (const auto& p : cal.points)
-    if (std::isfinite(p.x) && std::isfinite(p.value)) sorted.push_back(&p);
-  std::sort(sorted.begin(), sorted.end(), [](auto* a, auto* b) { return a->x < b->x; });
-  for (size_t i = 0; i + 1 < sorted.size(); ++i) {
-    const double fa = sorted[i]->value - target, fb = sorted[i + 1]->value - target;
-    if (fa * fb <= 0 && (!cal.bracketed || sorted[i + 1]->x - sorted[i]->x < cal.x_hi - cal.x_lo)) {
-      cal.bracketed = true;
-      cal.x_lo = sorted[i]->x;
-      cal.x_hi = sorted[i + 1]->x;
-      cal.slope = (sorted[i + 1]->value - sorted[i]->value) / (cal.x_hi - cal.x_lo);
-    }
-  }
-  if (!cal.bracketed) {
+    return harness::RootEvaluation{p.value - target, !p.reused};
+  };
+  const harness::RootSearchResult r = harness::brent_root_search(f, rs);
+  cal.bracketed = r.bracketed;
+  cal.converged = r.converged;
+  cal.x_lo = r.x_lo, cal.x_hi = r.x_hi, cal.slope = r.slope;
+  cal.iterations = r.iterations, cal.evaluations = r.evaluations;
+  if (!r.bracketed) {
+    std::vector<const CalPoint*> sorted;
+    for (const auto& p : cal.points)
+      if (std::isfinite(p.x) && std::isfinite(p.value)) sorted.push_back(&p);
+    std::sort(sorted.begin(), sorted.end(), [](auto* a, auto* b) { return a->x < b->x; });
     std::string vals;
     for (const auto* p : sorted) vals += (vals.empty() ? "" : ", ") + fmt("%.1f MPa at k = ", p->value / 1e6) + fmt("%.8g", p->k);
     cal.status = "no root: the target " + fmt("%.1f MPa", target / 1e6) + " is not bracketed by the start points (" + vals + ")";
     return cal;
   }
   cal.dx = s.resolution_rtol * std::abs(target) / std::abs(cal.slope);
-  const double tol_f = s.resolution_rtol * std::abs(target);
-
-  GslHandlerOff quiet;
-  gsl_function F{&trampoline, &ctx};
-  gsl_root_fsolver* solver = gsl_root_fsolver_alloc(gsl_root_fsolver_brent);
-  gsl_root_fsolver_set(solver, &F, cal.x_lo, cal.x_hi);  // both ends are earlier points
-  for (;;) {
-    const int rc = gsl_root_fsolver_iterate(solver);
-    ++cal.iterations;
-    const double x = gsl_root_fsolver_root(solver);
-    if (!ctx.error.empty() || rc != GSL_SUCCESS) {
-      cal.status = !ctx.error.empty() ? ctx.error : std::string("GSL: ") + gsl_strerror(rc);
-      // Keep the best point evaluated inside the bracket as the estimate.
-      double best = INFINITY;
-      for (const auto& p : cal.points)
-        if (p.x >= cal.x_lo && p.x <= cal.x_hi && std::abs(p.value - target) < best)
-          best = std::abs(p.value - target), cal.x = p.x, cal.k = p.k;
+  cal.x = r.x;
+  using End = harness::RootSearchResult::End;
+  const std::string after = " after " + std::to_string(cal.iterations) + " Brent iteration(s)";
+  switch (r.end) {
+    case End::f_tolerance:
+      cal.status = "converged: |M - target| = " + fmt("%.1f MPa", std::abs(cal.root()->value - target) / 1e6) +
+                   " <= resolution " + fmt("%.1f MPa", rs.f_tolerance / 1e6) + after;
       break;
-    }
-    const double fx = ctx.f(x);  // already evaluated by the iteration
-    const double lo = gsl_root_fsolver_x_lower(solver), hi = gsl_root_fsolver_x_upper(solver);
-    cal.x = x;
-    cal.k = k_of_x(x);
-    if (std::abs(fx) <= tol_f) {
-      cal.converged = true;
-      cal.status = "converged: |M - target| = " + fmt("%.1f MPa", std::abs(fx) / 1e6) + " <= resolution " +
-                   fmt("%.1f MPa", tol_f / 1e6) + " after " + std::to_string(cal.iterations) + " Brent iteration(s)";
+    case End::x_tolerance:
+      cal.status = "converged: bracket [" + fmt("%.3f", r.final_lo) + ", " + fmt("%.3f", r.final_hi) + "] narrower than " +
+                   fmt("%g decades", s.x_tolerance) + after;
       break;
-    }
-    if (gsl_root_test_interval(lo, hi, s.x_tolerance, 0) == GSL_SUCCESS) {
-      cal.converged = true;
-      cal.status = "converged: bracket [" + fmt("%.3f", lo) + ", " + fmt("%.3f", hi) + "] narrower than " +
-                   fmt("%g decades", s.x_tolerance) + " after " + std::to_string(cal.iterations) + " Brent iteration(s)";
+    case End::budget_spent: cal.status = "evaluation budget (" + std::to_string(s.max_evaluations) + ") spent"; break;
+    case End::non_finite:
+      cal.status = "no initial modulus at k = " + fmt("%.10g", cal.points.back().k) + " (" + cal.points.back().label + ")";
       break;
-    }
+    case End::gsl_error: cal.status = "GSL: " + r.gsl_message; break;
+    case End::no_bracket: break;
   }
-  gsl_root_fsolver_free(solver);
+  // A converged root is the finder's x (k from x); after a failure, the best point's own k.
+  const CalPoint* at = cal.root();
+  cal.k = r.converged || at == nullptr ? k_of_x(cal.x) : at->k;
   return cal;
 }
 
