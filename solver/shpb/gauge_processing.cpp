@@ -145,6 +145,83 @@ void check_options(const AnalysisSetup& setup, const GaugeOptions& opt) {
         "0 < pretrigger_fraction < 1, duration >= 0");
 }
 
+/// The start of the incident wave and the baselines (offset, noise) of both channels.
+struct Baselines {
+  Detection det;
+  Stats incident, transmitted;
+};
+
+// Pass 1 takes a robust baseline of the first pretrigger_fraction of the record; later passes
+// use mean and sigma of the samples before the detected start minus a margin, until the start
+// stops moving.
+Baselines find_baselines(const std::vector<double>& s_i, const std::vector<double>& s_t, const GaugeOptions& opt,
+                         GaugeReport& rep) {
+  const long n = static_cast<long>(s_i.size());
+  Baselines b;
+  long pre_end = std::max(min_pretrigger, static_cast<long>(opt.pretrigger_fraction * n));
+  b.incident = robust_stats(s_i, pre_end);
+  b.det = detect_start(s_i, b.incident, opt);
+  bool have_baseline = true;
+  for (int pass = 0; pass < 4; ++pass) {
+    pre_end = b.det.start - margin_samples(b.det.start);
+    if (pre_end < min_pretrigger) {
+      have_baseline = false;
+      break;
+    }
+    b.incident = stats(s_i, pre_end);
+    const Detection next = detect_start(s_i, b.incident, opt);
+    const bool settled = next.start == b.det.start;
+    b.det = next;
+    if (settled) break;
+  }
+  if (have_baseline) {
+    // The transmitted wave reaches its gauge after the incident reaches its own, so the same
+    // pre-trigger window is clean on both channels.
+    b.transmitted = stats(s_t, pre_end);
+  } else {
+    rep.warnings.push_back("fewer than " + std::to_string(min_pretrigger) +
+                           " pre-trigger samples before the incident start: offsets not removed");
+    b.incident = {};
+    b.det = detect_start(s_i, b.incident, opt);
+  }
+  return b;
+}
+
+/// The incident gauge's record split into the incident and the reflected wave.
+struct IncidentSplit {
+  std::vector<double> incident, reflected;
+  double pulse_length = 0;  ///< s, incident start to the end of its pulse
+};
+
+// The reflected wave reaches the incident gauge 2 d_I / c_I after the incident start. The
+// incident pulse ends at the first sample after its peak back at the walk level; the record
+// is split midway through the quiet gap between the two, so the incident's dispersed tail and
+// the reflected wave's precursor (and a toe missed by a late start) stay whole.
+IncidentSplit split_incident(const std::vector<double>& s_i, const Detection& det, double dt, double d_i,
+                             double c_i, GaugeReport& rep) {
+  const long n = static_cast<long>(s_i.size());
+  const long i_s = det.start;
+  const double arrival_r = static_cast<double>(i_s) + 2.0 * d_i / (c_i * dt);  // fractional
+  long i_peak = i_s;
+  for (long k = i_s; k < n && static_cast<double>(k) < arrival_r; ++k)
+    if (std::abs(s_i[k]) > std::abs(s_i[i_peak])) i_peak = k;
+  long i_end = i_peak;
+  while (i_end < n && static_cast<double>(i_end) < arrival_r && std::abs(s_i[i_end]) > det.walk_level) ++i_end;
+  double split = arrival_r;
+  if (static_cast<double>(i_end) >= arrival_r)
+    rep.warnings.push_back("incident pulse still above " + num(det.walk_level) +
+                           " when the reflected wave arrives: it is longer than 2 d_I / c_I = " +
+                           num(2 * d_i / c_i) + " s and overlaps the reflected wave at the gauge");
+  else
+    split = 0.5 * (static_cast<double>(i_end) + arrival_r);
+  IncidentSplit w;
+  w.pulse_length = static_cast<double>(i_end - i_s) * dt;
+  w.incident.assign(s_i.size(), 0.0);
+  w.reflected.assign(s_i.size(), 0.0);
+  for (long k = 0; k < n; ++k) (static_cast<double>(k) < split ? w.incident : w.reflected)[k] = s_i[k];
+  return w;
+}
+
 }  // namespace
 
 FaceWaves process_gauges(const GaugeRecord& rec, const AnalysisSetup& setup,
@@ -157,67 +234,15 @@ FaceWaves process_gauges(const GaugeRecord& rec, const AnalysisSetup& setup,
   // Compression positive from here on.
   std::vector<double> s_i(rec.incident.size()), s_t(rec.transmitted.size());
   for (long k = 0; k < n; ++k) s_i[k] = -rec.incident[k], s_t[k] = -rec.transmitted[k];
-
-  // Pass 1 takes a robust baseline of the first pretrigger_fraction of the record; later passes
-  // use mean and sigma of the samples before the detected start minus a margin, until the
-  // start stops moving.
-  long pre_end = std::max(min_pretrigger, static_cast<long>(opt.pretrigger_fraction * n));
-  Stats base_i = robust_stats(s_i, pre_end);
-  Detection det = detect_start(s_i, base_i, opt);
-  bool have_baseline = true;
-  for (int pass = 0; pass < 4; ++pass) {
-    pre_end = det.start - margin_samples(det.start);
-    if (pre_end < min_pretrigger) {
-      have_baseline = false;
-      break;
-    }
-    base_i = stats(s_i, pre_end);
-    const Detection next = detect_start(s_i, base_i, opt);
-    const bool settled = next.start == det.start;
-    det = next;
-    if (settled) break;
-  }
-  Stats base_t;
-  if (have_baseline) {
-    // The transmitted wave reaches its gauge after the incident reaches its own, so the same
-    // pre-trigger window is clean on both channels.
-    base_t = stats(s_t, pre_end);
-  } else {
-    rep.warnings.push_back("fewer than " + std::to_string(min_pretrigger) +
-                           " pre-trigger samples before the incident start: offsets not removed");
-    base_i = {};
-    det = detect_start(s_i, base_i, opt);
-  }
-  for (long k = 0; k < n; ++k) s_i[k] -= base_i.mean, s_t[k] -= base_t.mean;
+  const Baselines base = find_baselines(s_i, s_t, opt, rep);
+  for (long k = 0; k < n; ++k) s_i[k] -= base.incident.mean, s_t[k] -= base.transmitted.mean;
 
   const AnalysisBar& bi = setup.incident;
   const AnalysisBar& bt = setup.transmission;
   const double c_i = bi.wave_speed(), c_t = bt.wave_speed();
   const double d_i = bi.gauge_distance, d_t = bt.gauge_distance;
-  const long i_s = det.start;
-
-  // The reflected wave reaches the incident gauge 2 d_I / c_I after the incident start. The
-  // incident pulse ends at the first sample after its peak back at the walk level; the record
-  // is split midway through the quiet gap between the two, so the incident's dispersed tail
-  // and the reflected wave's precursor (and a toe missed by a late start) stay whole.
-  const double arrival_r = static_cast<double>(i_s) + 2.0 * d_i / (c_i * dt);  // fractional
-  long i_peak = i_s;
-  for (long k = i_s; k < n && static_cast<double>(k) < arrival_r; ++k)
-    if (std::abs(s_i[k]) > std::abs(s_i[i_peak])) i_peak = k;
-  long i_end = i_peak;
-  while (i_end < n && static_cast<double>(i_end) < arrival_r &&
-         std::abs(s_i[i_end]) > det.walk_level)
-    ++i_end;
-  double split = arrival_r;
-  if (static_cast<double>(i_end) >= arrival_r)
-    rep.warnings.push_back("incident pulse still above " + num(det.walk_level) +
-                           " when the reflected wave arrives: it is longer than 2 d_I / c_I = " +
-                           num(2 * d_i / c_i) + " s and overlaps the reflected wave at the gauge");
-  else
-    split = 0.5 * (static_cast<double>(i_end) + arrival_r);
-  const double pulse_length = static_cast<double>(i_end - i_s) * dt;
-  std::vector<double> inc_win(s_i.size(), 0.0), ref_win(s_i.size(), 0.0);
-  for (long k = 0; k < n; ++k) (static_cast<double>(k) < split ? inc_win : ref_win)[k] = s_i[k];
+  const long i_s = base.det.start;
+  const IncidentSplit win = split_incident(s_i, base.det, dt, d_i, c_i, rep);
 
   // Output sample k is face time k dt: record index i_s + k + d_I/(c_I dt) for every face signal.
   const double face0 = static_cast<double>(i_s) + d_i / (c_i * dt);
@@ -229,7 +254,7 @@ FaceWaves process_gauges(const GaugeRecord& rec, const AnalysisSetup& setup,
                                 "transmitted waves reach their gauges");
   // Automatic window: the incident pulse length plus 25 % (covers the specimen transit and the
   // tails of the reflected and transmitted waves), or what the record holds.
-  const double wanted = opt.duration > 0 ? opt.duration : 1.25 * pulse_length;
+  const double wanted = opt.duration > 0 ? opt.duration : 1.25 * win.pulse_length;
   long n_out = static_cast<long>(std::llround(wanted / dt)) + 1;
   if (n_out > n_avail) {
     rep.warnings.push_back("record ends before the analysis window: window cut from " +
@@ -245,8 +270,8 @@ FaceWaves process_gauges(const GaugeRecord& rec, const AnalysisSetup& setup,
   w.eps_t.resize(n_out);
   if (opt.dispersion_correction) {
     const double r_i = 0.5 * bi.diameter, r_t = 0.5 * bt.diameter;
-    const auto inc = propagate_dispersive(inc_win, dt, d_i, c_i, r_i, bi.poisson_ratio);
-    const auto ref = propagate_dispersive(ref_win, dt, -d_i, c_i, r_i, bi.poisson_ratio);
+    const auto inc = propagate_dispersive(win.incident, dt, d_i, c_i, r_i, bi.poisson_ratio);
+    const auto ref = propagate_dispersive(win.reflected, dt, -d_i, c_i, r_i, bi.poisson_ratio);
     const auto tr = propagate_dispersive(s_t, dt, -d_t, c_t, r_t, bt.poisson_ratio);
     for (long k = 0; k < n_out; ++k) {
       const double x = face0 + static_cast<double>(k);
@@ -258,19 +283,19 @@ FaceWaves process_gauges(const GaugeRecord& rec, const AnalysisSetup& setup,
     // One interpolation per channel: the gauge-to-face delay and the clock shift combined.
     for (long k = 0; k < n_out; ++k) {
       const double x = static_cast<double>(i_s + k);
-      w.eps_i[k] = inc_win[i_s + k];
-      w.eps_r[k] = sample_at(ref_win, x + 2.0 * d_i / (c_i * dt));
+      w.eps_i[k] = win.incident[i_s + k];
+      w.eps_r[k] = sample_at(win.reflected, x + 2.0 * d_i / (c_i * dt));
       w.eps_t[k] = sample_at(s_t, x + (d_i / c_i + d_t / c_t) / dt);
     }
   }
   for (long k = 0; k < n_out; ++k) w.t[k] = static_cast<double>(k) * dt;
 
-  rep.offset_incident = -base_i.mean;  // as measured (compression negative)
-  rep.offset_transmitted = -base_t.mean;
-  rep.noise_incident = base_i.sigma;
-  rep.noise_transmitted = base_t.sigma;
+  rep.offset_incident = -base.incident.mean;  // as measured (compression negative)
+  rep.offset_transmitted = -base.transmitted.mean;
+  rep.noise_incident = base.incident.sigma;
+  rep.noise_transmitted = base.transmitted.sigma;
   rep.start_time = rec.t[i_s];
-  rep.detection_level = det.level;
+  rep.detection_level = base.det.level;
   rep.window = static_cast<double>(n_out - 1) * dt;
   if (report) *report = std::move(rep);
   return w;
