@@ -55,9 +55,8 @@ void add_bars_file_bar(TableBuilder& t, const std::string& side) {
         "Distance from the strain gauge to the specimen face");
 }
 
-std::vector<ParamSpec> build_table() {
-  std::vector<ParamSpec> rows;
-  TableBuilder s(rows, "scene");
+// The scene's title and bars.
+void add_bar_rows(TableBuilder& s) {
   s.add(VT::string, "title", std::string(), "-", kNoRange,
         "Free-text title, copied into the outputs");
   s.add(VT::choice, "bars.kind", "characteristic", "-", kNoRange,
@@ -71,7 +70,10 @@ std::vector<ParamSpec> build_table() {
         "Target axial element length of the meshed bars", "bars.kind=meshed");
   add_scene_bar(s, "incident");
   add_scene_bar(s, "transmission");
+}
 
+// The incident pulse at the free end.
+void add_pulse_rows(TableBuilder& s) {
   const bar::TrapezoidPulse trap;
   const bar::TabulatedPulse tab;
   s.add(VT::choice, "pulse.kind", kRequired, "-", kNoRange,
@@ -91,7 +93,10 @@ std::vector<ParamSpec> build_table() {
         "CSV table time_s,stress_pa, time strictly increasing", "pulse.kind=tabulated");
   s.add(VT::number, "pulse.scale", tab.scale, "-", kPositive,
         "Factor applied to the tabulated stress", "pulse.kind=tabulated");
+}
 
+// What loads the specimen.
+void add_loading_rows(TableBuilder& s) {
   // Sec. 5.2.1: methodology 2 (bars) for tests that report the incident wave, methodology 1
   // (strain_rate) for those that report only the strain rate (Wang 2018, Huang 2013).
   s.add(VT::choice, "loading.kind", "bars", "-", kNoRange,
@@ -109,7 +114,10 @@ std::vector<ParamSpec> build_table() {
         "back-wall stress reaches this, or at time.end if it never does (a test loaded until a "
         "stress: Sec. 5.3.1 compares the Wang specimens at 72 MPa)",
         "loading.kind=strain_rate");
+}
 
+// The specimen: the 1-D column and the axisymmetric FE model (the DEM rows: schema_dem.cpp).
+void add_specimen_rows(TableBuilder& s) {
   const bar::ColumnParams col;
   s.add(VT::choice, "specimen.model", kRequired, "-", kNoRange,
         "Specimen model: 1-D column (elastic or compaction), axisymmetric FE (fe, Sec. 2.3) or "
@@ -169,8 +177,10 @@ std::vector<ParamSpec> build_table() {
         "Contact penalty stiffness factor (docs/fe.md)", "specimen.model=fe");
   s.add(VT::number, "specimen.contact_damping", fep.contact_damping, "-", kNonNegative,
         "Normal contact damping, fraction of critical (docs/fe.md)", "specimen.model=fe");
-  add_dem_rows(s);
+}
 
+// Time stepping and outputs.
+void add_time_output_rows(TableBuilder& s) {
   const shpb::TimeSpec time;
   s.add(VT::number, "time.end", kRequired, "s", kPositive,
         "Simulated time; at most 1e10 steps (time.end / dt, time_loop::kMaxSteps), and long "
@@ -202,8 +212,10 @@ std::vector<ParamSpec> build_table() {
         "Particle snapshot interval (position, radius, velocity, force in OUT.particles.h5, "
         "OUT.xmf for ParaView); 0 = none; rounded to whole steps",
         "specimen.model=dem");
+}
 
-  TableBuilder b(rows, "bars");
+// BARS.json of `kolsky analyze`: the bars, the specimen size and the gauge processing.
+void add_bars_file_rows(TableBuilder& b) {
   add_bars_file_bar(b, "incident");
   add_bars_file_bar(b, "transmission");
   const shpb::AnalysisSetup setup;
@@ -224,6 +236,19 @@ std::vector<ParamSpec> build_table() {
   b.add(VT::number, "processing.alpha_floor_fraction", shpb::AnalysisOptions{}.alpha_floor_fraction,
         "-", kHalfOpenUnitLower,
         "alpha(t) is reported only where abs(stress_avg) >= this x its peak");
+}
+
+std::vector<ParamSpec> build_table() {
+  std::vector<ParamSpec> rows;
+  TableBuilder s(rows, "scene");
+  add_bar_rows(s);
+  add_pulse_rows(s);
+  add_loading_rows(s);
+  add_specimen_rows(s);
+  add_dem_rows(s);
+  add_time_output_rows(s);
+  TableBuilder b(rows, "bars");
+  add_bars_file_rows(b);
   return rows;
 }
 
