@@ -12,6 +12,7 @@
 
 #include "core/errors.hpp"
 #include "dem/contact_hertz_mindlin.hpp"
+#include "dem/dem_specimen_params.hpp"
 #include "dem/dem_system.hpp"
 #include "dem/wall.hpp"
 
@@ -200,6 +201,28 @@ void expect_force_as_before(bool profiled) {
 
 TEST(TestDemWall, GrainAgainstPlaneAndInsideCylinderGivesTheForceOfBefore) { expect_force_as_before(false); }
 TEST(TestDemWall, GrainAgainstProfiledWallsGivesTheForceOfBefore) { expect_force_as_before(true); }
+
+TEST(WallFamily, OneSlotRuleAndOneDefault) {
+  const WallSlots s{2, 1};  // a DemSpecimen: front and back planes, then the tube
+  EXPECT_EQ(s.count(), 3);
+  EXPECT_EQ(s.slot(WallKind::plane, 1), 1);
+  EXPECT_EQ(s.slot(WallKind::cylinder, 0), 2);
+  for (int w = 0; w < s.count(); ++w) EXPECT_EQ(s.slot(s.kind(w), s.index(w)), w);
+  EXPECT_EQ(s.kind(2), WallKind::cylinder);
+  // Every wall default is LinearParams{} (Table 4.1), written once.
+  const LinearParams t41;
+  for (const WallLaw& w : {SpecimenWalls{}.end_law, SpecimenWalls{}.tube_law, PlaneWall{}.law,
+                           CylinderWall{}.law}) {
+    const auto& l = std::get<LinearSpring>(w);
+    EXPECT_EQ(l.normal.stiffness, t41.normal_stiffness);
+    EXPECT_EQ(l.tangential.stiffness, t41.shear_stiffness);
+    EXPECT_EQ(l.tangential.friction, t41.friction);
+    EXPECT_EQ(name_of(w), "linear");
+  }
+  EXPECT_EQ(t41.normal_stiffness, 2.6e6);
+  EXPECT_EQ(t41.shear_stiffness, 1.6e6);
+  EXPECT_EQ(t41.friction, 0.3);
+}
 
 }  // namespace
 }  // namespace kolsky::dem
