@@ -6,6 +6,9 @@
 //     breakage) on one thread. Counters: grains at the start and at the end, the growth ratio,
 //     wall seconds per simulated microsecond and particle-steps per second (grains counted at
 //     every output sample, times the steps between samples).
+//   BM_Ch5WangSafetyFactor/N10/S100: the same run at time.safety_factor S100 / 100 (the
+//     scene's is 1.0, the one of BM_Ch5WangUpscaling): whether a step at the chapter's factor
+//     costs more per grain than at 0.3 (issue 34, docs/dem.md "Chapter 5's step").
 // The packing is made once per N through the specimen's packing cache in the build folder
 // (KOLSKY_BENCH_CACHE) and is not timed.
 #include <benchmark/benchmark.h>
@@ -25,7 +28,7 @@ namespace {
 
 using namespace kolsky;
 
-nlohmann::json wang_scene(double n) {
+nlohmann::json wang_scene(double n, double safety_factor = 0) {
   const std::string dir = std::string(KOLSKY_SOURCE_DIR) + "/reproductions/chapter5";
   std::ifstream f(dir + "/scene_wang.json");
   auto j = nlohmann::json::parse(f);
@@ -34,15 +37,15 @@ nlohmann::json wang_scene(double n) {
   j["specimen"]["breakage"]["sigma_lim0"] = dem::upscaled_sigma_lim0(1.53e9, n, j["specimen"]["breakage"]["m1"].get<double>());
   j["specimen"]["breakage"]["fines_d_min"] = 7.5e-6 * n;
   j["time"]["end"] = 60e-6;
+  if (safety_factor > 0) j["time"]["safety_factor"] = safety_factor;
   return j;
 }
 
-void BM_Ch5WangUpscaling(benchmark::State& st) {
+void run_wang(benchmark::State& st, double n, double safety_factor) {
   omp_set_num_threads(1);
-  const double n = st.range(0) / 10.0;
   const std::string dir = std::string(KOLSKY_SOURCE_DIR) + "/reproductions/chapter5";
-  const auto sc = scene::parse_scene(wang_scene(n), dir + "/scene_wang.json", dir);
-  double grains0 = 0, grains1 = 0, particle_steps = 0, simulated = 0;
+  const auto sc = scene::parse_scene(wang_scene(n, safety_factor), dir + "/scene_wang.json", dir);
+  double grains0 = 0, grains1 = 0, particle_steps = 0, simulated = 0, steps = 0;
   for (auto _ : st) {
     st.PauseTiming();
     shpb::SimulatedShpb sim(sc.spec);  // packs once (cached), then only reads the cache
@@ -56,6 +59,7 @@ void BM_Ch5WangUpscaling(benchmark::State& st) {
     particle_steps = 0;
     for (std::size_t k = 1; k < g.size(); ++k) particle_steps += g[k] * steps_per_sample;
     simulated = r.t.back();
+    steps = static_cast<double>(r.steps);
   }
   st.counters["grains_start"] = grains0;
   st.counters["grains_end"] = grains1;
@@ -63,10 +67,16 @@ void BM_Ch5WangUpscaling(benchmark::State& st) {
   st.counters["particle_steps_per_s"] = benchmark::Counter(particle_steps, benchmark::Counter::kIsIterationInvariantRate);
   st.counters["s_per_simulated_us"] =
       benchmark::Counter(simulated * 1e6, benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
-  st.SetLabel("Wang 5 x 15 mm, n = 0.41, N = " + std::to_string(n).substr(0, 4) + ", 60 us");
+  st.counters["steps"] = steps;
+  st.SetLabel("Wang 5 x 15 mm, n = 0.41, N = " + std::to_string(n).substr(0, 4) + ", 60 us" +
+              (safety_factor > 0 ? ", safety factor " + std::to_string(safety_factor).substr(0, 4) : ""));
 }
+
+void BM_Ch5WangUpscaling(benchmark::State& st) { run_wang(st, st.range(0) / 10.0, 0); }
+void BM_Ch5WangSafetyFactor(benchmark::State& st) { run_wang(st, st.range(0) / 10.0, st.range(1) / 100.0); }
 
 }  // namespace
 
 BENCHMARK(BM_Ch5WangUpscaling)->Arg(20)->Arg(25)->Arg(30)->Iterations(1)->Unit(benchmark::kSecond)->UseRealTime();
+BENCHMARK(BM_Ch5WangSafetyFactor)->Args({20, 30})->Iterations(1)->Unit(benchmark::kSecond)->UseRealTime();
 BENCHMARK_MAIN();
