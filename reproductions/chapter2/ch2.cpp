@@ -1,6 +1,7 @@
 #include "chapter2/ch2.hpp"
 
 #include <algorithm>
+#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -35,17 +36,25 @@ double unloading_modulus_for(const Table1D& t) {
 
 namespace {
 
+/// A table as CSV text, each value in the shortest form that reads back exactly (to_chars),
+/// so that a reader gets the table's exact values.
+std::string table_csv_text(const Table1D& t, const std::string& header) {
+  std::string text = header + "\n";
+  char buf[32];
+  for (size_t k = 0; k < t.x.size(); ++k) {
+    text.append(buf, std::to_chars(buf, buf + sizeof buf, t.x[k]).ptr);
+    text += ',';
+    text.append(buf, std::to_chars(buf, buf + sizeof buf, t.y[k]).ptr);
+    text += '\n';
+  }
+  return text;
+}
+
 /// The table as the scene's loading_curve CSV in `dir`, named by its content (FNV-1a of the
 /// text): written once, so that the same table is the same file and the case's content key
 /// (which takes a file by its path) names the table too.
 std::string eos_table_file(const std::string& dir, const Table1D& t) {
-  // Every digit a double needs (17), so that the scene reader gets the table's exact values.
-  std::string text = "strain,stress_pa\n";
-  char line[64];
-  for (size_t k = 0; k < t.x.size(); ++k) {
-    std::snprintf(line, sizeof line, "%.17g,%.17g\n", t.x[k], t.y[k]);
-    text += line;
-  }
+  const std::string text = table_csv_text(t, "strain,stress_pa");
   char name[32];
   std::snprintf(name, sizeof name, "eos_%016llx.csv", static_cast<unsigned long long>(fnv1a_64(text)));
   const std::string path = std::filesystem::absolute(std::filesystem::path(dir) / name).string();
@@ -162,11 +171,10 @@ Table1D read_table_csv(const std::string& path) {
 }
 
 void write_table_csv(const std::string& path, const Table1D& t, const std::string& header) {
-  std::ofstream f(path);
-  f << header << "\n";
-  f.precision(10);
-  for (size_t k = 0; k < t.x.size(); ++k) f << t.x[k] << "," << t.y[k] << "\n";
-  if (!f) throw std::runtime_error("cannot write " + path);
+  write_file_atomic(path, table_csv_text(t, header));
+  // Read back: a table written for reuse must give its exact values (a 10-digit table did not).
+  const Table1D back = read_table_csv(path);
+  if (back.x != t.x || back.y != t.y) throw std::runtime_error(path + ": the table read back differs from the one written");
 }
 
 std::vector<double> scaled(const std::vector<double>& v, double f) {

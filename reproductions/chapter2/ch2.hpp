@@ -71,6 +71,7 @@ double at_strain(const shpb::SpecimenHistory& h, const std::vector<double>& v, d
 double reference_value(const nlohmann::json& targets, const std::string& id);
 /// Table1D from a two-column CSV (header/comment lines skipped).
 Table1D read_table_csv(const std::string& path);
+/// Writes the table atomically with 17 digits, then reads it back and throws if a value differs.
 void write_table_csv(const std::string& path, const Table1D& t, const std::string& header);
 nlohmann::json read_json(const std::string& path);
 std::vector<double> scaled(const std::vector<double>& v, double f);
