@@ -8,6 +8,8 @@
 #include <cstdio>
 #include <stdexcept>
 
+#include "harness/isotonic.hpp"
+
 namespace kolsky::ch2 {
 
 Table1D table_from_params(const std::vector<double>& strains, const std::vector<double>& x,
@@ -27,24 +29,6 @@ Table1D table_from_params(const std::vector<double>& strains, const std::vector<
 }
 
 namespace {
-
-/// Least-squares non-decreasing sequence nearest to `v` (pool-adjacent-violators): the
-/// never-softening table closest to a start table whose increments fall.
-std::vector<double> nearest_never_softening(const std::vector<double>& v) {
-  std::vector<double> mean, weight;
-  for (double x : v) {
-    mean.push_back(x), weight.push_back(1);
-    while (mean.size() > 1 && mean[mean.size() - 2] > mean.back()) {
-      const size_t j = mean.size() - 2;
-      mean[j] = (mean[j] * weight[j] + mean.back() * weight.back()) / (weight[j] + weight.back());
-      weight[j] += weight.back();
-      mean.pop_back(), weight.pop_back();
-    }
-  }
-  std::vector<double> out;
-  for (size_t j = 0; j < mean.size(); ++j) out.insert(out.end(), static_cast<size_t>(weight[j]), mean[j]);
-  return out;
-}
 
 struct Problem {
   const BaseScene* base;
@@ -102,7 +86,7 @@ CalibrationResult calibrate_dry_eos(const BaseScene& base, const std::vector<Cal
     inc[k] = p - prev;
     prev = p;
   }
-  if (opts.never_soften) inc = nearest_never_softening(inc);
+  if (opts.never_soften) inc = harness::nearest_non_decreasing(inc);
   for (size_t k = 0; k < n; ++k) {
     // A never-softening start's growth of the increment may be zero; 1 % of the first keeps ln finite.
     const double v = !opts.never_soften || k == 0 ? inc[k] : std::max(inc[k] - inc[k - 1], 0.01 * inc[0]);
