@@ -103,13 +103,18 @@ ch2::CalibrationResult calibrate(const Inputs& in, const std::string& out_dir, h
   m.scalar("ch2.bulk_modulus_initial", k_initial / 1e6);
   m.note("ch2.bulk_modulus_initial", "chord of the calibrated table's first segment (0 to eps_v = " +
                                          fmt("%.2f", cal.table.x[1]) + ")");
+  // Stiffening (Sec. 2.3.4: a linear zone, then stiffening): no increment falls, and the last
+  // exceeds the first (a linear table does not stiffen).
   bool stiffening = true;
   std::string incs = "increments (MPa per 0.05):";
+  const auto& y = cal.table.y;
   for (size_t k = 1; k < cal.table.x.size(); ++k) {
-    const double inc = cal.table.y[k] - cal.table.y[k - 1];
+    const double inc = y[k] - y[k - 1];
     incs += " " + fmt("%.2f", inc / 1e6);
-    if (k >= 2 && inc < cal.table.y[k - 1] - cal.table.y[k - 2]) stiffening = false;
+    if (k >= 2 && inc < y[k - 1] - y[k - 2]) stiffening = false;
   }
+  const size_t last = y.size() - 1;
+  if (!(y[last] - y[last - 1] > y[1] - y[0])) stiffening = false;
   m.trend("ch2.trend_eos_stiffening", stiffening, incs);
   m.trend("ch2.trend_steel_stiffer", cal.slopes[0] > cal.slopes[1],
           "steel " + fmt("%.1f", cal.slopes[0] / 1e6) + " MPa > polycarbonate " + fmt("%.1f", cal.slopes[1] / 1e6) + " MPa");
