@@ -57,7 +57,9 @@ constexpr int kAhead = 16;  // pairs: about the latency of an L3 hit over a pair
   return m;
 }
 
-// (2) The inputs of the m touching pairs, packed into the batch.
+// (2) The inputs of the m touching pairs, packed into the batch. With one material the
+// constants' lanes were filled once (fill_constants) and are not written per contact.
+template <bool kOneMaterial>
 [[gnu::always_inline]] inline void pack_batch(const PairArrays& a, const HertzMindlinConstants* table, int n_mat,
                                               const int* touching, int m, HertzMindlinBatch& b) {
   for (int t = 0; t < m; ++t) {
@@ -69,7 +71,18 @@ constexpr int kAhead = 16;  // pairs: about the latency of an L3 hit over a pair
     b.wix[t] = a.w[i].x, b.wiy[t] = a.w[i].y, b.wiz[t] = a.w[i].z;
     b.wjx[t] = a.w[j].x, b.wjy[t] = a.w[j].y, b.wjz[t] = a.w[j].z;
     b.hx[t] = a.hist[k].x, b.hy[t] = a.hist[k].y, b.hz[t] = a.hist[k].z;
-    const HertzMindlinConstants& c = table[a.mat[i] * n_mat + a.mat[j]];
+    if constexpr (!kOneMaterial) {
+      const HertzMindlinConstants& c = table[a.mat[i] * n_mat + a.mat[j]];
+      b.k_force[t] = c.force, b.k_stiffness[t] = c.stiffness, b.k_damping[t] = c.damping;
+      b.k_shear[t] = c.shear, b.k_friction[t] = c.friction;
+      b.k_tdamp[t] = c.tangential_damping_scale;
+    }
+  }
+}
+
+// Every lane's constants, once per batch: those of the one material pair.
+void fill_constants(const HertzMindlinConstants& c, HertzMindlinBatch& b) {
+  for (int t = 0; t < kCap; ++t) {
     b.k_force[t] = c.force, b.k_stiffness[t] = c.stiffness, b.k_damping[t] = c.damping;
     b.k_shear[t] = c.shear, b.k_friction[t] = c.friction;
     b.k_tdamp[t] = c.tangential_damping_scale;
@@ -125,6 +138,8 @@ void hertz_mindlin_pair_forces(const PairArrays& arrays, const HertzMindlinConst
   const int b1 = static_cast<int>(static_cast<std::int64_t>(a.n_blocks) * (th + 1) / nt);
   auto batch = std::make_unique<HertzMindlinBatch>();
   HertzMindlinBatch& b = *batch;
+  const bool one_material = n_mat == 1;
+  if (one_material) fill_constants(table[0], b);
   int touching[kCap];
   OwnerSums sums;
   for (int blk = b0; blk < b1; ++blk) {
@@ -134,7 +149,10 @@ void hertz_mindlin_pair_forces(const PairArrays& arrays, const HertzMindlinConst
     for (int k0 = a.first[i0], k_end = a.first[i1]; k0 < k_end; k0 += kCap) {
       const int k1 = k0 + kCap < k_end ? k0 + kCap : k_end;
       const int m = find_touching(a, k0, k1, k_end, touching);
-      pack_batch(a, table, n_mat, touching, m, b);
+      if (one_material)
+        pack_batch<true>(a, table, n_mat, touching, m, b);
+      else
+        pack_batch<false>(a, table, n_mat, touching, m, b);
       evaluate(b, m, dt);  // (3) the law
       scatter_batch(a, touching, m, b, sums);
     }
