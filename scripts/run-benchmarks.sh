@@ -13,6 +13,9 @@ for b in "$bin_dir"/bench_*; do
   out="$out_dir/${stamp}_${commit}_${name}.json"
   "$b" --benchmark_out="$out.tmp" --benchmark_out_format=json --benchmark_repetitions=3 \
        --benchmark_report_aggregates_only=true
+  # Google Benchmark writes a counter's cv over zeros (0 / 0) as a bare NaN, which is not JSON:
+  # null instead, so that every tracked file parses (BenchSummary.TrackedResultsParse).
+  sed -E -i 's/: -?(NaN|Infinity)([,}]|$)/: null\2/' "$out.tmp"
   mv "$out.tmp" "$out"
   echo "bench: wrote $out"
 done
