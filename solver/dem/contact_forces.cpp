@@ -4,16 +4,13 @@
 // Geometry: n from i to j, overlap delta = r_i + r_j - |x_j - x_i|, contact point at
 // a_i = r_i - delta/2 from i (a_j = r_j - delta/2 from j, so both points coincide); for a wall
 // the contact point lies on the wall surface, a = r - delta.
-#include <algorithm>
-#include <cmath>
-#include <limits>
-
 #include "dem/contact_forces.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <limits>
+#include <stdexcept>
 
 #include "dem/contact_hertz_mindlin.hpp"
 #include "dem/hertz_mindlin_batch.hpp"
@@ -23,7 +20,7 @@ namespace kolsky::dem {
 PairArrays::PairArrays(ContactNetwork& c, Particles& p, std::vector<double>& dissipated)
     : first(c.pairs.first.data()), pi(c.pairs.i.data()), pj(c.pairs.j.data()), slot(c.pair_slot.data()),
       mat(p.material.data()), x(p.x.data()), v(p.v.data()), w(p.omega.data()), rad(p.radius.data()),
-      mass(p.mass.data()), hist(c.pairs.history.data()), f(p.f.data()), tq(p.torque.data()),
+      mass(p.mass.data()), r_eff(c.pair_r_eff.data()), m_eff(c.pair_m_eff.data()), hist(c.pairs.history.data()), f(p.f.data()), tq(p.torque.data()),
       diss(dissipated.data()), stored(c.pair_out.elastic.data()), out(c.pair_out.out.data()),
       active(c.pair_out.active.data()), block_first(c.block_first.data()), n(static_cast<int>(p.size())),
       n_blocks(static_cast<int>(c.block_first.size()) - 1) {}
@@ -200,6 +197,8 @@ void evaluate_contacts(ContactNetwork& net, Particles& p, std::vector<double>& d
   // waiting for it. Wall contacts read only positions, velocities and spins and write their
   // own slots, so they may run beside the sweep, and which thread takes which chunk changes
   // no result. The barrier then separates the slots' writers from gather().
+  if (batched && net.pair_r_eff.size() != net.pairs.size())
+    throw std::logic_error("evaluate_contacts: the pair constants do not describe the pair list (rebuild skipped)");
   const PairArrays arrays(net, p, dissipated);
 #pragma omp parallel if (static_cast<std::ptrdiff_t>(p.size()) >= kParallelMin)
   {

@@ -34,6 +34,7 @@ struct PairArrays {
   const int *first, *pi, *pj, *slot, *mat;
   const Vec3 *x, *v, *w;
   const double *rad, *mass;
+  const double *r_eff, *m_eff;  // per listed pair (ContactNetwork::pair_r_eff, pair_m_eff)
   Vec3 *hist, *f, *tq;
   double *diss, *stored;
   ContactOut* out;

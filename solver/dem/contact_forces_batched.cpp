@@ -66,7 +66,7 @@ template <bool kOneMaterial>
     const int k = touching[t], i = a.pi[k], j = a.pj[k];
     const Vec3 d = a.x[j] - a.x[i], dv = a.v[j] - a.v[i];
     b.dx[t] = d.x, b.dy[t] = d.y, b.dz[t] = d.z;
-    b.ri[t] = a.rad[i], b.rj[t] = a.rad[j], b.mi[t] = a.mass[i], b.mj[t] = a.mass[j];
+    b.ri[t] = a.rad[i], b.rj[t] = a.rad[j], b.r_eff[t] = a.r_eff[k], b.m_eff[t] = a.m_eff[k];
     b.dvx[t] = dv.x, b.dvy[t] = dv.y, b.dvz[t] = dv.z;
     b.wix[t] = a.w[i].x, b.wiy[t] = a.w[i].y, b.wiz[t] = a.w[i].z;
     b.wjx[t] = a.w[j].x, b.wjy[t] = a.w[j].y, b.wjz[t] = a.w[j].z;

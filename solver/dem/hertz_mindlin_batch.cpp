@@ -47,8 +47,8 @@ namespace {
                  sz = ai * b.wiz[t] + aj * b.wjz[t];
     const double vx = b.dvx[t] - (sy * nz - sz * ny), vy = b.dvy[t] - (sz * nx - sx * nz),
                  vz = b.dvz[t] - (sx * ny - sy * nx);
-    const double r_eff = ri * rj / rsum;
-    const double m_eff = b.mi[t] * b.mj[t] / (b.mi[t] + b.mj[t]);
+    const double r_eff = b.r_eff[t];  // ri * rj / rsum, formed by the caller
+    const double m_eff = b.m_eff[t];  // mi * mj / (mi + mj)
 
     // Hertz normal piece, Tsuji dashpot, normal_force().
     const double a = std::sqrt(r_eff * overlap);

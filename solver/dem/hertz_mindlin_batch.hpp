@@ -32,13 +32,15 @@ HertzMindlinConstants batch_constants(const HertzMindlinPair& p);
 std::vector<HertzMindlinConstants> hertz_mindlin_table(const HertzMindlin& law);
 
 /// Inputs and outputs of up to kCapacity touching contacts, one array per scalar. Inputs:
-/// d = x_j - x_i, radii, masses, dv = v_j - v_i, both spins, the history, the constants.
+/// d = x_j - x_i, radii, the effective radius and mass (r_i r_j / (r_i + r_j), m_i m_j /
+/// (m_i + m_j), formed with these expressions), dv = v_j - v_i, both spins, the history, the
+/// constants.
 /// Outputs: the force on i, the torques on i and j, the dissipated and stored energies and the
 /// updated history (written over the input history).
 struct HertzMindlinBatch {
   static constexpr int kCapacity = 128;
   template <class T> using Lane = T[kCapacity];
-  alignas(64) Lane<double> dx, dy, dz, ri, rj, mi, mj, dvx, dvy, dvz;
+  alignas(64) Lane<double> dx, dy, dz, ri, rj, r_eff, m_eff, dvx, dvy, dvz;
   alignas(64) Lane<double> wix, wiy, wiz, wjx, wjy, wjz, hx, hy, hz;
   alignas(64) Lane<double> k_force, k_stiffness, k_damping, k_shear, k_friction, k_tdamp;
   alignas(64) Lane<double> fx, fy, fz, tix, tiy, tiz, tjx, tjy, tjz, dissipated, elastic;
