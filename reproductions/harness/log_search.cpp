@@ -4,6 +4,10 @@
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_min.h>
 
+#include <memory>
+
+#include "harness/gsl_quiet.hpp"
+
 namespace kolsky::harness {
 
 namespace {
@@ -48,9 +52,11 @@ LogSearchResult log_brent_search(const std::function<double(double)>& objective,
     r.note = "no bracket within the evaluation cap: the best evaluated value is reported";
     return r;
   }
-  gsl_error_handler_t* previous = gsl_set_error_handler_off();
+  const GslHandlerOff quiet;
   gsl_function F{&gsl_objective, &f};
-  gsl_min_fminimizer* mz = gsl_min_fminimizer_alloc(gsl_min_fminimizer_brent);
+  const std::unique_ptr<gsl_min_fminimizer, decltype(&gsl_min_fminimizer_free)> owner(
+      gsl_min_fminimizer_alloc(gsl_min_fminimizer_brent), &gsl_min_fminimizer_free);
+  gsl_min_fminimizer* mz = owner.get();
   gsl_min_fminimizer_set_with_values(mz, &F, m, fm, a, fa, b, fb);
   while (!cap_reached()) {
     if (gsl_min_fminimizer_iterate(mz) != GSL_SUCCESS) break;
@@ -67,8 +73,6 @@ LogSearchResult log_brent_search(const std::function<double(double)>& objective,
       break;
     }
   }
-  gsl_min_fminimizer_free(mz);
-  gsl_set_error_handler(previous);
   if (!r.converged) r.note = "evaluation cap reached before the bracket reached the tolerance";
   return r;
 }

@@ -5,17 +5,13 @@
 #include <gsl/gsl_roots.h>
 
 #include <algorithm>
+#include <memory>
+
+#include "harness/gsl_quiet.hpp"
 
 namespace kolsky::harness {
 
 namespace {
-
-// GSL's default handler aborts on a non-finite function value; the finder's own status codes
-// are checked instead (as in eos/three_phase_fit.cpp).
-struct GslHandlerOff {
-  gsl_error_handler_t* previous = gsl_set_error_handler_off();
-  ~GslHandlerOff() { gsl_set_error_handler(previous); }
-};
 
 struct Cached {
   const std::function<RootEvaluation(double)>* objective;
@@ -76,7 +72,9 @@ RootSearchResult brent_root_search(const std::function<RootEvaluation(double)>& 
   Cached f{&objective, &r, s.max_evaluations};
   GslHandlerOff quiet;
   gsl_function F{&trampoline, &f};
-  gsl_root_fsolver* solver = gsl_root_fsolver_alloc(gsl_root_fsolver_brent);
+  const std::unique_ptr<gsl_root_fsolver, decltype(&gsl_root_fsolver_free)> owner(
+      gsl_root_fsolver_alloc(gsl_root_fsolver_brent), &gsl_root_fsolver_free);
+  gsl_root_fsolver* solver = owner.get();
   gsl_root_fsolver_set(solver, &F, r.x_lo, r.x_hi);  // both ends are start points
   for (;;) {
     const int rc = gsl_root_fsolver_iterate(solver);
@@ -103,7 +101,6 @@ RootSearchResult brent_root_search(const std::function<RootEvaluation(double)>& 
       break;
     }
   }
-  gsl_root_fsolver_free(solver);
   return r;
 }
 

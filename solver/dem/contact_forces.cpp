@@ -10,7 +10,6 @@
 #include <cmath>
 #include <cstddef>
 #include <limits>
-#include <stdexcept>
 
 #include "dem/contact_hertz_mindlin.hpp"
 #include "dem/hertz_mindlin_batch.hpp"
@@ -182,6 +181,20 @@ void gather(const ContactNetwork& net, Particles& p, std::vector<double>& dissip
   }
 }
 
+// r* and m* of every listed pair (ContactNetwork::pair_r_eff), as hertz_mindlin_batch.cpp
+// formed them per contact.
+void form_pair_constants(ContactNetwork& net, const Particles& p) {
+  const std::size_t n_pairs = net.pairs.size();
+  net.pair_r_eff.resize(n_pairs);
+  net.pair_m_eff.resize(n_pairs);
+  for (std::size_t k = 0; k < n_pairs; ++k) {
+    const int i = net.pairs.i[k], j = net.pairs.j[k];
+    const double ri = p.radius[i], rj = p.radius[j], mi = p.mass[i], mj = p.mass[j];
+    net.pair_r_eff[k] = ri * rj / (ri + rj);
+    net.pair_m_eff[k] = mi * mj / (mi + mj);
+  }
+}
+
 }  // namespace
 
 void evaluate_contacts(ContactNetwork& net, Particles& p, std::vector<double>& dissipated,
@@ -197,8 +210,7 @@ void evaluate_contacts(ContactNetwork& net, Particles& p, std::vector<double>& d
   // waiting for it. Wall contacts read only positions, velocities and spins and write their
   // own slots, so they may run beside the sweep, and which thread takes which chunk changes
   // no result. The barrier then separates the slots' writers from gather().
-  if (batched && net.pair_r_eff.size() != net.pairs.size())
-    throw std::logic_error("evaluate_contacts: the pair constants do not describe the pair list (rebuild skipped)");
+  if (batched && net.pair_r_eff.size() != net.pairs.size()) form_pair_constants(net, p);
   const PairArrays arrays(net, p, dissipated);
 #pragma omp parallel if (static_cast<std::ptrdiff_t>(p.size()) >= kParallelMin)
   {

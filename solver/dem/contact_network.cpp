@@ -146,15 +146,8 @@ bool needs_rebuild(const ContactNetwork& net, double skin, const std::vector<Wal
 
 void rebuild(ContactNetwork& net, const Particles& p, const std::vector<Wall>& walls, double skin) {
   net.pairs = build_pair_list(p.x, p.radius, skin, net.pairs);
-  const std::size_t n_pairs = net.pairs.size();
-  net.pair_r_eff.resize(n_pairs);
-  net.pair_m_eff.resize(n_pairs);
-  for (std::size_t k = 0; k < n_pairs; ++k) {
-    const int i = net.pairs.i[k], j = net.pairs.j[k];
-    const double ri = p.radius[i], rj = p.radius[j], mi = p.mass[i], mj = p.mass[j];
-    net.pair_r_eff[k] = ri * rj / (ri + rj);  // as hertz_mindlin_batch.cpp forms them
-    net.pair_m_eff[k] = mi * mj / (mi + mj);
-  }
+  net.pair_r_eff.clear();  // formed again by the first batched evaluation of this list
+  net.pair_m_eff.clear();
   build_wall_candidates(net, p, walls, skin);
   const int n = static_cast<int>(p.size());
   assign_partner_slots(net, n);

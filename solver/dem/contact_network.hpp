@@ -65,10 +65,11 @@ struct ContactNetwork {
   // [partner_first[q], partner_first[q+1]) (pair order), so the gather streams through memory.
   std::vector<int> pair_slot, partner_first;
   ContactStore pair_out;
-  // r* = r_i r_j / (r_i + r_j) and m* = m_i m_j / (m_i + m_j) of each listed pair, formed at
-  // the rebuild with the law's own expressions (so the same bits) instead of at every step:
-  // radii and masses change only through edits or mutable_particles(), which invalidate the
-  // lists. Read by the batched Hertz-Mindlin sweep (two of its 13 roots and divisions).
+  // r* = r_i r_j / (r_i + r_j) and m* = m_i m_j / (m_i + m_j) of each listed pair, with the
+  // law's own expressions (so the same bits), once per list instead of at every step: the
+  // batched Hertz-Mindlin sweep forms them at its first evaluation after a rebuild (which
+  // empties them); radii and masses change only through edits or mutable_particles(), which
+  // invalidate the lists. Two of the batch law's 13 roots and divisions.
   std::vector<double> pair_r_eff, pair_m_eff;
   // Wall-contact candidates grouped by wall slot (WallSlots: planes, then cylinders), sorted by
   // grain, with their histories, outputs and normal forces (total, and the elastic part).
