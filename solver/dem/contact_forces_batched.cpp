@@ -57,9 +57,8 @@ constexpr int kAhead = 16;  // pairs: about the latency of an L3 hit over a pair
   return m;
 }
 
-// (2) The inputs of the m touching pairs, packed into the batch. With one material the
-// constants' lanes were filled once (fill_constants) and are not written per contact.
-template <bool kOneMaterial>
+// (2) The inputs of the m touching pairs, packed into the batch, with each pair's material
+// constants (more than one material; with one, the law reads the inputs where they lie).
 [[gnu::always_inline]] inline void pack_batch(const PairArrays& a, const HertzMindlinConstants* table, int n_mat,
                                               const int* touching, int m, HertzMindlinBatch& b) {
   for (int t = 0; t < m; ++t) {
@@ -71,18 +70,7 @@ template <bool kOneMaterial>
     b.wix[t] = a.w[i].x, b.wiy[t] = a.w[i].y, b.wiz[t] = a.w[i].z;
     b.wjx[t] = a.w[j].x, b.wjy[t] = a.w[j].y, b.wjz[t] = a.w[j].z;
     b.hx[t] = a.hist[k].x, b.hy[t] = a.hist[k].y, b.hz[t] = a.hist[k].z;
-    if constexpr (!kOneMaterial) {
-      const HertzMindlinConstants& c = table[a.mat[i] * n_mat + a.mat[j]];
-      b.k_force[t] = c.force, b.k_stiffness[t] = c.stiffness, b.k_damping[t] = c.damping;
-      b.k_shear[t] = c.shear, b.k_friction[t] = c.friction;
-      b.k_tdamp[t] = c.tangential_damping_scale;
-    }
-  }
-}
-
-// Every lane's constants, once per batch: those of the one material pair.
-void fill_constants(const HertzMindlinConstants& c, HertzMindlinBatch& b) {
-  for (int t = 0; t < kCap; ++t) {
+    const HertzMindlinConstants& c = table[a.mat[i] * n_mat + a.mat[j]];
     b.k_force[t] = c.force, b.k_stiffness[t] = c.stiffness, b.k_damping[t] = c.damping;
     b.k_shear[t] = c.shear, b.k_friction[t] = c.friction;
     b.k_tdamp[t] = c.tangential_damping_scale;
@@ -138,9 +126,12 @@ void hertz_mindlin_pair_forces(const PairArrays& arrays, const HertzMindlinConst
   const int b1 = static_cast<int>(static_cast<std::int64_t>(a.n_blocks) * (th + 1) / nt);
   auto batch = std::make_unique<HertzMindlinBatch>();
   HertzMindlinBatch& b = *batch;
-  const bool one_material = n_mat == 1;
-  if (one_material) fill_constants(table[0], b);
   int touching[kCap];
+  // One material (every scene of the reproductions and the benchmark): the law reads the
+  // touching pairs' inputs where they lie, and the constants of the one material pair, without
+  // the copy into the batch's input lanes (docs/dem.md, "Performance": +3-7 %).
+  const bool one_material = n_mat == 1;
+  const GatheredContacts gathered{touching, a.pi, a.pj, a.x, a.v, a.w, a.rad, a.r_eff, a.m_eff, a.hist, table[0]};
   OwnerSums sums;
   for (int blk = b0; blk < b1; ++blk) {
     const int i0 = a.block_first[blk], i1 = a.block_first[blk + 1];
@@ -149,11 +140,12 @@ void hertz_mindlin_pair_forces(const PairArrays& arrays, const HertzMindlinConst
     for (int k0 = a.first[i0], k_end = a.first[i1]; k0 < k_end; k0 += kCap) {
       const int k1 = k0 + kCap < k_end ? k0 + kCap : k_end;
       const int m = find_touching(a, k0, k1, k_end, touching);
-      if (one_material)
-        pack_batch<true>(a, table, n_mat, touching, m, b);
-      else
-        pack_batch<false>(a, table, n_mat, touching, m, b);
-      evaluate(b, m, dt);  // (3) the law
+      if (one_material) {  // (2) and (3) in one
+        evaluate_gathered(gathered, b, m, dt);
+      } else {
+        pack_batch(a, table, n_mat, touching, m, b);
+        evaluate(b, m, dt);  // (3) the law
+      }
       scatter_batch(a, touching, m, b, sums);
     }
     sums.close_until(a, i1);

@@ -2,9 +2,12 @@
 // "Performance"). The per-contact kernel HertzMindlinPair::force() branches twice per contact
 // (sliding or sticking, the tangential dashpot's Coulomb cap) and the pair loop once more
 // (touching or not, ~50/50 and unpredictable in a dense packing); none of these vectorize. Here
-// the touching contacts are first packed into a structure of arrays, then one branch-free loop
-// evaluates the same law over all of them, every branch computed and selected per lane, so the
-// compiler can use 4 or 8 lanes for the roots and divisions that dominate the cost.
+// the touching contacts are first listed, then one branch-free loop evaluates the same law over
+// all of them, every branch computed and selected per lane, so the compiler can use 4 or 8
+// lanes for the roots and divisions that dominate the cost. The loop reads its inputs either
+// from a structure of arrays they were packed into (evaluate: any number of materials) or
+// where they lie, in the particles' and the pair list's arrays (evaluate_gathered: one
+// material, no copy).
 // The arithmetic is that of HertzMindlinPair::force() (contact_pieces.hpp) operation for
 // operation, in the same order, and the file is compiled without FMA contraction; IEEE
 // +, -, *, / and sqrt round the same in any vector width, so the results are bitwise those of
@@ -49,6 +52,22 @@ struct HertzMindlinBatch {
 /// Evaluates contacts [0, count) of b (count <= kCapacity) over the step dt (s), with the
 /// instruction-set variant in use (best_batch_kernel() unless use_batch_kernel chose another).
 void evaluate(HertzMindlinBatch& b, int count, double dt);
+
+/// The touching contacts of a pair list where they lie, for evaluate_gathered(): contact t is
+/// listed pair k = touching[t] of grains i = pi[k], j = pj[k]; one material pair's constants.
+struct GatheredContacts {
+  const int *touching, *pi, *pj;
+  const Vec3 *x, *v, *w;                  ///< the grains' positions, velocities, spins
+  const double *radius, *r_eff, *m_eff;   ///< per grain; per listed pair (as the batch's lanes)
+  const Vec3* history;                    ///< per listed pair
+  HertzMindlinConstants constants;
+};
+
+/// evaluate() for `count` contacts read where they lie instead of packed into b's input lanes:
+/// the outputs and the updated history go to b's output and history lanes, with the same bits
+/// (the law is one source; the inputs are formed with the same operations as the packing).
+/// Saves the copy into the batch (docs/dem.md, "Performance"). The same variant as evaluate().
+void evaluate_gathered(const GatheredContacts& g, HertzMindlinBatch& b, int count, double dt);
 
 /// The instruction-set variants of evaluate(): one source, compiled three times (without FMA
 /// contraction, so every variant gives the same bits; test_dem_batch.cpp checks it).
