@@ -1,10 +1,11 @@
 // Grain-pair forces of the Hertz-Mindlin law through the batch kernel (hertz_mindlin_batch.hpp):
 // the same contacts, values and summation order as pair_forces (contact_forces.cpp),
-// restructured so that the law itself runs branch-free over packed touching contacts.
+// restructured so that the law itself runs branch-free over the touching contacts.
 // Per block of up to kCapacity listed pairs: (1) test which pairs touch, recording the touching
 // ones without a branch, and clear the histories of the separated ones; (2) copy the inputs of
-// the touching ones into the batch; (3) evaluate the batch; (4) store the partner's side and
-// the history, and sum the owner's side in pair order (a run of an owner may span blocks).
+// the touching ones into the batch (several materials; with one, the law reads them where they
+// lie); (3) evaluate the law into the batch's outputs; (4) store the partner's side and the
+// history, and sum the owner's side in pair order (a run of an owner may span blocks).
 // The owners are swept in fixed blocks of DemOptions::owner_block grains, as pair_forces does:
 // a partner in the owner's block receives its side directly, the others through their slot.
 #include <omp.h>
