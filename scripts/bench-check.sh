@@ -42,9 +42,17 @@ reps=${BENCH_CHECK_REPS:-3}
 # ratio spreads 10 times more (docs/dem.md: +-20 % between idle runs of one binary), and
 # three runs cannot measure it: its margin only catches a collapse of the parallel speed-up
 # (a serial region, lost threads), not a small regression; the 1-thread figure is the fine one.
+# Re-measured (issue 34) on the 2-core Intel Xeon with AVX-512, 2026-12-06, after the gathered
+# Hertz-Mindlin law, idle, `--spread 5` twice (10 runs):
+#   DEM 1 thread:  median 0.0991, cv 1.75 %, 3 sigma of a difference 7.4 %, worst drop between
+#                  two runs 5.7 %: the 10 % margin stays
+#   DEM 2 threads: median 0.0956, cv 4.0 %, 3 sigma 16.8 %, worst drop 12.0 %: 25 % stays
+#   FE 10 x 20:    median 0.0427, cv 2.8 %, 3 sigma 12.0 %, worst drop 9.0 %: the margin
+#                  rises from 10 % to 12 % (by the rule above; 10 % would fail about 1 check
+#                  in 160 on this machine with nothing changed)
 margin_dem_1t=0.10
 margin_dem_2t=0.25
-margin_fe=0.10
+margin_fe=0.12
 
 stamp=$(date -u +%Y%m%d)
 commit=$(git rev-parse --short=12 HEAD 2>/dev/null || echo unknown)
