@@ -212,7 +212,8 @@ Variant variant(BatchKernel k) {
   }
 }
 
-// The variant evaluate() calls: the best the CPU has, chosen once, the same for every thread.
+// The variant evaluate() and evaluate_gathered() call: the best the CPU has, chosen once, the
+// same for every thread.
 Variant& chosen() {
   static Variant v = variant(best_batch_kernel());
   return v;

@@ -58,7 +58,8 @@ void evaluate(HertzMindlinBatch& b, int count, double dt);
 struct GatheredContacts {
   const int *touching, *pi, *pj;
   const Vec3 *x, *v, *w;                  ///< the grains' positions, velocities, spins
-  const double *radius, *r_eff, *m_eff;   ///< per grain; per listed pair (as the batch's lanes)
+  const double* radius;                   ///< per grain
+  const double *r_eff, *m_eff;            ///< per listed pair (ContactNetwork::pair_r_eff, pair_m_eff)
   const Vec3* history;                    ///< per listed pair
   HertzMindlinConstants constants;
 };
