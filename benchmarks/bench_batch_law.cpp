@@ -45,7 +45,7 @@ dem::HertzMindlinBatch synthetic_batch() {
     b.dz[c] = dist * std::cos(phi);
     b.ri[c] = ri, b.rj[c] = rj;
     const double mi = 2650 * 4.0 / 3.0 * std::numbers::pi * ri * ri * ri, mj = 2650 * 4.0 / 3.0 * std::numbers::pi * rj * rj * rj;
-    b.r_eff[c] = ri * rj / (ri + rj), b.m_eff[c] = mi * mj / (mi + mj);
+    b.r_eff[c] = dem::pair_effective(ri, rj), b.m_eff[c] = dem::pair_effective(mi, mj);
     b.dvx[c] = 0.5 - u, b.dvy[c] = 0.3 * (w - 0.5), b.dvz[c] = -0.2 - 0.5 * u;
     b.wix[c] = 10 * (u - 0.5), b.wiy[c] = 5 * w, b.wiz[c] = -3 * u;
     b.wjx[c] = -4 * w, b.wjy[c] = 6 * (u - 0.5), b.wjz[c] = 2 * w;

@@ -75,8 +75,8 @@ void pair_forces(const PairArrays& arrays, const Law& law, double dt) {
         g.omega_rel = wi - a.w[j];
         g.r_i = ri;
         g.r_j = a.rad[j];
-        g.r_eff = ri * a.rad[j] / rsum;
-        g.m_eff = mi * a.mass[j] / (mi + a.mass[j]);
+        g.r_eff = pair_effective(ri, a.rad[j]);
+        g.m_eff = pair_effective(mi, a.mass[j]);
         const ContactResult r = law.pair(mat_i, a.mat[j]).force(g, a.hist[k], dt);
         const Vec3 nf = cross(g.normal, r.force);
         F += r.force;
@@ -181,17 +181,16 @@ void gather(const ContactNetwork& net, Particles& p, std::vector<double>& dissip
   }
 }
 
-// r* and m* of every listed pair (ContactNetwork::pair_r_eff), as hertz_mindlin_batch.cpp
-// formed them per contact.
+// r* and m* of every listed pair (ContactNetwork::pair_r_eff), as pair_forces forms them per
+// contact.
 void form_pair_constants(ContactNetwork& net, const Particles& p) {
   const std::size_t n_pairs = net.pairs.size();
   net.pair_r_eff.resize(n_pairs);
   net.pair_m_eff.resize(n_pairs);
   for (std::size_t k = 0; k < n_pairs; ++k) {
     const int i = net.pairs.i[k], j = net.pairs.j[k];
-    const double ri = p.radius[i], rj = p.radius[j], mi = p.mass[i], mj = p.mass[j];
-    net.pair_r_eff[k] = ri * rj / (ri + rj);
-    net.pair_m_eff[k] = mi * mj / (mi + mj);
+    net.pair_r_eff[k] = pair_effective(p.radius[i], p.radius[j]);
+    net.pair_m_eff[k] = pair_effective(p.mass[i], p.mass[j]);
   }
 }
 

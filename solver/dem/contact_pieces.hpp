@@ -25,6 +25,11 @@ struct ContactGeometry {
   double r_i = 0, r_j = 0;  ///< radii; r_j = +inf for a wall, m
 };
 
+/// R* = r_i r_j / (r_i + r_j) from two radii, m* = m_i m_j / (m_i + m_j) from two masses: one
+/// expression, so that the per-pair constants formed once per list (ContactNetwork::pair_r_eff,
+/// pair_m_eff) and the per-contact kernel have the same bits.
+constexpr double pair_effective(double a, double b) { return a * b / (a + b); }
+
 /// What a law's stable-step rule needs to know about the grains (every law of both families
 /// has `double stable_dt(const LawLimits&) const`, contact_law.hpp; DemSystem fills it).
 struct LawLimits {

@@ -53,8 +53,8 @@ struct LawInputs {
                sz = ai * in.wiz + aj * in.wjz;
   const double vx = in.dvx - (sy * nz - sz * ny), vy = in.dvy - (sz * nx - sx * nz),
                vz = in.dvz - (sx * ny - sy * nx);
-  const double r_eff = in.r_eff;  // ri * rj / rsum, formed by the caller
-  const double m_eff = in.m_eff;  // mi * mj / (mi + mj)
+  const double r_eff = in.r_eff;  // pair_effective(ri, rj), formed per listed pair
+  const double m_eff = in.m_eff;  // pair_effective(mi, mj)
 
   // Hertz normal piece, Tsuji dashpot, normal_force().
   const double a = std::sqrt(r_eff * overlap);
